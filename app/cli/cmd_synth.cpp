@@ -1,0 +1,9 @@
+#include "commands.hpp"
+#include "fieldlines/error.hpp"
+
+namespace fieldlines::cli {
+
+// Placeholder until this command is implemented; it fails loudly rather than pretend.
+int cmd_synth(const Args&) { throw Error("'synth' is not implemented yet"); }
+
+}  // namespace fieldlines::cli

@@ -1,0 +1,7 @@
+#include "elsed.hpp"
+
+namespace fieldlines {
+
+void ElsedEngine::run(const cv::Mat&, const DetectorParams&, std::vector<Segment>&) {}
+
+}  // namespace fieldlines
