@@ -5,6 +5,8 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include "edge_drawer.hpp"
+#include "elsed_types.hpp"
 #include "fieldlines/detector.hpp"
 
 namespace fieldlines {
@@ -15,7 +17,14 @@ class ElsedEngine {
   void run(const cv::Mat& bgr, const DetectorParams& params, std::vector<Segment>& out);
 
  private:
-  cv::Mat gray_, blurred_;
+  void compute_gradients(const DetectorParams& params);
+  void find_anchors(int scan_interval, int threshold);
+
+  cv::Mat gray_, blurred_, dx_mat_, dy_mat_;
+  elsed::GradientMaps maps_;
+  std::vector<elsed::Mark> marks_;
+  std::vector<elsed::Pixel> anchors_;
+  elsed::EdgeDrawer drawer_;
 };
 
 }  // namespace fieldlines

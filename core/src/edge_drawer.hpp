@@ -1,0 +1,61 @@
+#pragma once
+// Private: ELSED's edge drawing with on-line line fitting and junction jumps.
+//
+// From an anchor, pixels are followed along the gradient ridge. Once `min_line_length` pixels
+// fit a line (mean squared error below the threshold), the drawing only accepts pixels close to
+// that line and keeps refitting. Where the edge leaves the line (several outliers in a row, or a
+// pixel already owned by another edge), the drawer tries to jump the discontinuity along the
+// line's own direction (junction sizes), checking on the far side that the edge goes on with the
+// same orientation (gradient structure tensor). Pending work is a stack of branches.
+#include <vector>
+
+#include "elsed_types.hpp"
+#include "line_model.hpp"
+
+namespace fieldlines::elsed {
+
+struct DrawerParams {
+  double line_fit_error = 0.2;
+  double px_to_segment_dist = 1.5;
+  int min_line_length = 40;
+  bool treat_junctions = true;
+  std::vector<int> junction_sizes{5, 7, 9};
+  double junction_eigen_ratio = 10;         // dominant / minor singular value of the tensor
+  double junction_max_angle = 0.174532925;  // 10 degrees, tensor orientation vs the line normal
+};
+
+class EdgeDrawer {
+ public:
+  // Prepares for a new image; `marks` must be width*height and all Free.
+  void reset(const GradientMaps& maps, std::vector<Mark>& marks, const DrawerParams& params);
+  void draw_from_anchor(Pixel anchor);
+
+  // Finished segments, in the order they were completed; their pixels index into chain().
+  const std::vector<LineModel>& segments() const { return segments_; }
+  const std::vector<Pixel>& chain() const { return chain_; }
+
+ private:
+  struct Branch {
+    Step step;
+    Pixel px;
+    bool first_side;            // pixels extend the segment's first side (its end)
+    std::vector<Pixel> prefix;  // pixels to put on the chain before drawing
+  };
+
+  void draw_tree(Pixel anchor, std::vector<Pixel>& anchor_pixels, bool first_call);
+  bool can_extend(const LineModel& seg, bool at_end, std::vector<Pixel>& extension);
+  void add_junction_pixels(const std::vector<Pixel>& extension, LineModel& seg, bool first_side);
+  void push_or_reuse(bool& reuse_top, Step step, Pixel px, bool first_side);
+  Mark& mark(Pixel p) { return (*marks_)[p.y * maps_->width + p.x]; }
+
+  const GradientMaps* maps_ = nullptr;
+  std::vector<Mark>* marks_ = nullptr;
+  DrawerParams params_;
+  std::vector<LineModel> segments_;
+  std::vector<Branch> stack_;
+  std::vector<Pixel> chain_;
+  // Scratch reused between calls.
+  std::vector<Pixel> outliers_, extension_, to_validate_, anchor_pixels_;
+};
+
+}  // namespace fieldlines::elsed

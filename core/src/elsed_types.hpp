@@ -1,0 +1,41 @@
+#pragma once
+// Private: small types shared by the ELSED stages.
+#include <cstdint>
+#include <vector>
+
+namespace fieldlines::elsed {
+
+struct Pixel {
+  int x = 0, y = 0;
+  bool operator==(const Pixel&) const = default;
+};
+
+// Orientation of the EDGE at a pixel (not of the gradient): a vertical edge has |dx| >= |dy|
+// and is drawn by stepping up/down; a horizontal one by stepping left/right.
+enum class EdgeDir : std::uint8_t { Vertical = 0, Horizontal = 1 };
+
+enum class Step : std::uint8_t { Left, Right, Up, Down };
+
+constexpr Step opposite(Step s) {
+  switch (s) {
+    case Step::Left: return Step::Right;
+    case Step::Right: return Step::Left;
+    case Step::Up: return Step::Down;
+    case Step::Down: break;
+  }
+  return Step::Up;
+}
+
+// What the drawing has made of each pixel. Drawing stops on pixels already owned by an edge or a
+// segment; validation only counts Inlier pixels.
+enum class Mark : std::uint8_t { Free = 0, Edge, Anchor, Inlier, Outlier, Junction };
+
+// Gradient images of the smoothed grey image, row-major, width*height each.
+struct GradientMaps {
+  int width = 0, height = 0;
+  std::vector<std::int16_t> dx, dy;   // Sobel 3x3
+  std::vector<std::int16_t> mag;      // |dx| + |dy|, zero below the gradient threshold
+  std::vector<EdgeDir> dir;
+};
+
+}  // namespace fieldlines::elsed
