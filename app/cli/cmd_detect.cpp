@@ -1,9 +1,205 @@
+// `fieldlines detect`: detect and classify field lines in images or folders.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <new>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "args.hpp"
 #include "commands.hpp"
+#include "detections_json.hpp"
+#include "fieldlines/detector.hpp"
 #include "fieldlines/error.hpp"
+#include "fieldlines/image_io.hpp"
+#include "fieldlines/overlay.hpp"
+#include "image_inputs.hpp"
+#include "output_file.hpp"
+#include "parallel_batch.hpp"
+#include "progress.hpp"
 
 namespace fieldlines::cli {
+namespace {
 
-// Placeholder until this command is implemented; it fails loudly rather than pretend.
-int cmd_detect(const Args&) { throw Error("'detect' is not implemented yet"); }
+namespace fs = std::filesystem;
+
+constexpr const char* kHelp = R"(usage: fieldlines detect [options] PATH...
+
+Detects line segments in each image (PATH is an image or a folder of images, read in
+file-name order), measures their colour gradients and classifies them as field marking,
+field boundary or none. Prints one summary line per image on stdout.
+
+options:
+  --json OUT        write every segment to OUT (schema: docs/detect_and_bench.md)
+  --draw DIR        write an overlay per image to DIR/<name>.png
+                    (marking magenta, boundary orange, none azure; legend top-left)
+  --threads N       images processed in parallel, one detector per thread (default 1);
+                    outputs keep the input order
+  --quiet           no per-image lines on stdout, no progress on stderr
+  -h, --help        this help
+
+A bad file (missing, corrupt, empty, unsupported pixel type, too large) is reported on
+stderr and skipped; the batch goes on and the exit code is 1 at the end.
+Exit codes: 0 all images processed, 1 some failed, 2 usage or fatal error.
+
+examples:
+  fieldlines detect frame.png
+  fieldlines detect --json out/lines.json --draw out/overlays ../shared/data/elsed-ssl/images
+  fieldlines detect --threads 2 --quiet --json lines.json a.png b.jpg more_frames/
+)";
+
+struct Options {
+  bool help = false;
+  std::optional<fs::path> json, draw;
+  int threads = 1;
+  bool quiet = false;
+  std::vector<std::string> paths;
+};
+
+Options parse(const Args& args) {
+  const ParsedArgs a(args, {"--json", "--draw", "--threads"}, {"--quiet", "--help", "-h"});
+  Options o;
+  o.help = a.flag("--help") || a.flag("-h");
+  if (const auto v = a.value("--json")) o.json = *v;
+  if (const auto v = a.value("--draw")) o.draw = *v;
+  o.threads = a.int_or("--threads", 1, 1, 256);
+  o.quiet = a.flag("--quiet");
+  o.paths = a.positionals();
+  return o;
+}
+
+// Prefixes the path unless the message already starts with it (image_io's messages do).
+std::string with_path(const fs::path& path, const std::string& message) {
+  const std::string p = path.string();
+  return message.rfind(p, 0) == 0 ? message : p + ": " + message;
+}
+
+// Overlay file names, fixed before the batch so they do not depend on thread timing: <stem>.png,
+// or <stem>-2.png... when two inputs share a stem or the name would overwrite an input.
+std::vector<fs::path> overlay_paths(const std::vector<fs::path>& images, const fs::path& dir) {
+  std::set<fs::path> inputs;
+  for (const auto& p : images) inputs.insert(fs::weakly_canonical(p));
+  std::set<std::string> used;
+  std::vector<fs::path> out;
+  for (const auto& p : images) {
+    const std::string stem = p.stem().string().empty() ? "image" : p.stem().string();
+    std::string name = stem + ".png";
+    for (int k = 2; used.count(name) || inputs.count(fs::weakly_canonical(dir / name)); ++k)
+      name = stem + "-" + std::to_string(k) + ".png";
+    used.insert(name);
+    out.push_back(dir / name);
+  }
+  return out;
+}
+
+struct ItemResult {
+  std::optional<ImageDetections> detections;
+  std::optional<std::string> error;
+};
+
+std::string summary_line(const ImageDetections& d) {
+  std::map<Label, int> counts;
+  for (const Segment& s : d.segments) ++counts[s.label];
+  char buf[160];
+  std::snprintf(buf, sizeof buf, ": %zu segments (%d marking, %d boundary, %d none), %dx%d, %.2f ms",
+                d.segments.size(), counts[Label::Marking], counts[Label::Boundary], counts[Label::None],
+                d.width, d.height, d.detect_ms);
+  return d.path.string() + buf;
+}
+
+}  // namespace
+
+int cmd_detect(const Args& args) {
+  const Options opt = parse(args);
+  if (opt.help) {
+    std::fputs(kHelp, stdout);
+    return 0;
+  }
+  if (opt.paths.empty()) throw Error("no PATH given: name at least one image or folder (see --help)");
+  // Output locations are checked before a possibly long batch, not after it.
+  if (opt.json) check_output_path("--json", *opt.json);
+  if (opt.draw) {
+    std::error_code ec;
+    fs::create_directories(*opt.draw, ec);
+    if (!fs::is_directory(*opt.draw))
+      throw Error("--draw " + opt.draw->string() + ": cannot create the folder" + (ec ? " (" + ec.message() + ")" : ""));
+  }
+
+  const DetectorParams params;
+  const Thresholds thresholds;
+  ImageInputs inputs = expand_image_inputs(opt.paths);
+  const std::vector<fs::path>& images = inputs.images;
+  const auto overlays = opt.draw ? overlay_paths(images, *opt.draw) : std::vector<fs::path>{};
+
+  ProgressParams progress_params;
+  if (opt.quiet) progress_params.mode = ProgressParams::Mode::Off;
+  Progress progress("detect", images.size(), stderr, progress_params);
+  for (const auto& f : inputs.failed) progress.message("fieldlines detect: " + f.error);
+
+  const int workers = std::max(1, std::min<int>(opt.threads, static_cast<int>(images.size())));
+  std::vector<LineDetector> detectors;
+  for (int w = 0; w < workers; ++w) detectors.emplace_back(params, thresholds);
+
+  std::vector<ItemResult> results(images.size());
+  run_parallel_batch(images.size(), workers, [&](std::size_t i, int worker) {
+    const fs::path& path = images[i];
+    try {
+      const cv::Mat image = load_image(path);
+      ImageDetections d;
+      d.path = path;
+      d.width = image.cols;
+      d.height = image.rows;
+      const auto t0 = std::chrono::steady_clock::now();
+      detectors[static_cast<std::size_t>(worker)].detect(image, d.segments);
+      d.detect_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      if (opt.draw) {
+        std::vector<unsigned char> png;
+        if (!cv::imencode(".png", draw_overlay(image, d.segments), png))
+          throw Error("could not encode the overlay as PNG");
+        write_output_file(overlays[i], std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+      }
+      results[i].detections = std::move(d);
+    } catch (const std::bad_alloc&) {
+      results[i].error = with_path(path, "out of memory (image too large?)");
+    } catch (const std::exception& e) {
+      results[i].error = with_path(path, e.what());
+    }
+    if (results[i].error) progress.message("fieldlines detect: " + *results[i].error);
+    progress.advance();
+  });
+  progress.finish();
+
+  const std::size_t input_count = images.size() + inputs.failed.size();
+  std::vector<ImageDetections> done;
+  std::vector<FailedImage> failed = std::move(inputs.failed);
+  std::size_t total_segments = 0;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    if (results[i].detections) {
+      total_segments += results[i].detections->segments.size();
+      if (!opt.quiet) std::printf("%s\n", summary_line(*results[i].detections).c_str());
+      done.push_back(std::move(*results[i].detections));
+    } else {
+      failed.push_back({images[i], results[i].error.value_or("unknown error")});
+    }
+  }
+  if (opt.json) write_output_file(*opt.json, detections_json(done, failed).dump() + "\n");
+
+  if (!opt.quiet) {
+    std::printf("%zu segments in %zu image%s", total_segments, done.size(), done.size() == 1 ? "" : "s");
+    if (!failed.empty()) std::printf(", %zu failed", failed.size());
+    std::printf("\n");
+    if (opt.json) std::printf("segments written to %s\n", opt.json->string().c_str());
+    if (opt.draw) std::printf("overlays written to %s\n", opt.draw->string().c_str());
+  }
+  if (!failed.empty())
+    std::fprintf(stderr, "fieldlines detect: %zu of %zu input%s failed (see the messages above)\n", failed.size(),
+                 input_count, input_count == 1 ? "" : "s");
+  return failed.empty() ? 0 : 1;
+}
 
 }  // namespace fieldlines::cli

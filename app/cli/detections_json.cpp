@@ -1,0 +1,52 @@
+#include "detections_json.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+namespace fieldlines::cli {
+namespace {
+
+// The double nearest the float's shortest decimal form, so the file shows -0.98697948 rather
+// than -0.9869794845581055 and still reads back to the same float. NaN/inf are not JSON: the
+// detector must not produce them, but never write an unreadable file.
+double finite_or_zero(float v) {
+  if (!std::isfinite(v)) return 0.0;
+  char buf[32];
+  const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+  *end = '\0';
+  return std::strtod(buf, nullptr);
+}
+
+nlohmann::ordered_json rgb(const Rgb& c) {
+  return nlohmann::ordered_json::array({finite_or_zero(c[0]), finite_or_zero(c[1]), finite_or_zero(c[2])});
+}
+
+}  // namespace
+
+nlohmann::ordered_json to_json(const Segment& s) {
+  return {{"x0", finite_or_zero(s.x0)},           {"y0", finite_or_zero(s.y0)},
+          {"x1", finite_or_zero(s.x1)},           {"y1", finite_or_zero(s.y1)},
+          {"saliency", finite_or_zero(s.saliency)}, {"grad_x", rgb(s.grad_x)},
+          {"grad_y", rgb(s.grad_y)},              {"label", std::string(to_string(s.label))}};
+}
+
+nlohmann::ordered_json to_json(const ImageDetections& image) {
+  nlohmann::ordered_json segments = nlohmann::ordered_json::array();
+  for (const Segment& s : image.segments) segments.push_back(to_json(s));
+  return {{"image", image.path.filename().string()},
+          {"path", image.path.string()},
+          {"width", image.width},
+          {"height", image.height},
+          {"detect_ms", image.detect_ms},
+          {"segments", std::move(segments)}};
+}
+
+nlohmann::ordered_json detections_json(std::span<const ImageDetections> images, std::span<const FailedImage> failed) {
+  nlohmann::ordered_json out{{"images", nlohmann::ordered_json::array()}, {"errors", nlohmann::ordered_json::array()}};
+  for (const auto& image : images) out["images"].push_back(to_json(image));
+  for (const auto& f : failed) out["errors"].push_back({{"path", f.path.string()}, {"error", f.error}});
+  return out;
+}
+
+}  // namespace fieldlines::cli

@@ -1,0 +1,29 @@
+#pragma once
+// The JSON that `fieldlines detect --json` writes (schema in docs/detect_and_bench.md):
+// {"images":[{"image","path","width","height","detect_ms","segments":[{"x0","y0","x1","y1",
+//  "saliency","grad_x":[r,g,b],"grad_y":[r,g,b],"label"}]}], "errors":[{"path","error"}]}
+// grad_y is the image-down derivative and channels are R,G,B, as in fieldlines::Segment.
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "fieldlines/segment.hpp"
+#include "image_inputs.hpp"
+
+namespace fieldlines::cli {
+
+struct ImageDetections {
+  std::filesystem::path path;
+  int width = 0, height = 0;
+  double detect_ms = 0;  // LineDetector::detect alone (decoding and drawing excluded)
+  std::vector<Segment> segments;
+};
+
+nlohmann::ordered_json to_json(const Segment& segment);
+nlohmann::ordered_json to_json(const ImageDetections& image);
+nlohmann::ordered_json detections_json(std::span<const ImageDetections> images, std::span<const FailedImage> failed);
+
+}  // namespace fieldlines::cli

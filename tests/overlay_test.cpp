@@ -1,0 +1,102 @@
+// Overlays: each label is drawn in its own colour, any loadable image type works, and odd
+// inputs (tiny images, non-finite endpoints) never crash.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+#include "fieldlines/overlay.hpp"
+
+namespace {
+
+using fieldlines::Label;
+using fieldlines::Segment;
+
+Segment horizontal(float y, Label label) {
+  Segment s;
+  s.x0 = 100;
+  s.x1 = 300;
+  s.y0 = s.y1 = y;
+  s.label = label;
+  return s;
+}
+
+cv::Vec3b at(const cv::Mat& img, int x, int y) { return img.at<cv::Vec3b>(y, x); }
+cv::Vec3b as_vec(const cv::Scalar& s) {
+  return {static_cast<uchar>(s[0]), static_cast<uchar>(s[1]), static_cast<uchar>(s[2])};
+}
+
+}  // namespace
+
+TEST(Overlay, EachLabelHasItsOwnColour) {
+  const cv::Mat image(240, 320, CV_8UC3, cv::Scalar(0, 0, 0));
+  const std::vector<Segment> segments{horizontal(120, Label::Marking), horizontal(160, Label::Boundary),
+                                      horizontal(200, Label::None), horizontal(230, Label::Unlabelled)};
+  fieldlines::OverlayParams params;
+  params.thickness = 5;
+  const cv::Mat out = fieldlines::draw_overlay(image, segments, params);
+  ASSERT_EQ(out.type(), CV_8UC3);
+  ASSERT_EQ(out.size(), image.size());
+  EXPECT_EQ(at(out, 200, 120), as_vec(params.marking_colour));
+  EXPECT_EQ(at(out, 200, 160), as_vec(params.boundary_colour));
+  EXPECT_EQ(at(out, 200, 200), as_vec(params.none_colour));
+  EXPECT_EQ(at(out, 200, 230), as_vec(params.unlabelled_colour));
+  // The colours are distinct from each other and the input is left untouched.
+  EXPECT_NE(params.marking_colour, params.boundary_colour);
+  EXPECT_NE(params.marking_colour, params.none_colour);
+  EXPECT_NE(params.boundary_colour, params.none_colour);
+  EXPECT_EQ(cv::countNonZero(image.reshape(1)), 0);
+}
+
+TEST(Overlay, LegendIsDrawnWhenItFitsAndSkippedWhenNot) {
+  const cv::Mat bright(480, 640, CV_8UC3, cv::Scalar(200, 200, 200));
+  fieldlines::OverlayParams params;
+  const cv::Mat with = fieldlines::draw_overlay(bright, {}, params);
+  params.legend = false;
+  const cv::Mat without = fieldlines::draw_overlay(bright, {}, params);
+  // The legend darkens a box in the top-left corner and holds the three label colours.
+  EXPECT_LT(cv::mean(with(cv::Rect(0, 0, 60, 40)))[0], 150.0);
+  EXPECT_EQ(cv::norm(without, bright, cv::NORM_INF), 0.0);
+  for (const Label l : {Label::Marking, Label::Boundary, Label::None}) {
+    cv::Mat mask;
+    const cv::Scalar c = fieldlines::label_colour(l, params);
+    cv::inRange(with, c, c, mask);
+    EXPECT_GT(cv::countNonZero(mask), 0) << fieldlines::to_string(l);
+  }
+  // On a tiny image the legend cannot fit: the image is returned unchanged rather than covered.
+  const cv::Mat tiny(12, 12, CV_8UC3, cv::Scalar(200, 200, 200));
+  EXPECT_EQ(cv::norm(fieldlines::draw_overlay(tiny, {}, {}), tiny, cv::NORM_INF), 0.0);
+}
+
+TEST(Overlay, AcceptsGrey16BitAndAlphaImages) {
+  const std::vector<Segment> segments{horizontal(50, Label::Marking)};
+  for (const int type : {CV_8UC1, CV_16UC1, CV_16UC3, CV_8UC4}) {
+    const cv::Mat image(100, 400, type, cv::Scalar::all(0));
+    fieldlines::OverlayParams params;
+    params.thickness = 5;
+    const cv::Mat out = fieldlines::draw_overlay(image, segments, params);
+    EXPECT_EQ(out.type(), CV_8UC3) << type;
+    EXPECT_EQ(at(out, 200, 50), as_vec(fieldlines::OverlayParams{}.marking_colour)) << type;
+  }
+}
+
+TEST(Overlay, NonFiniteAndFarAwayEndpointsDoNotCrash) {
+  Segment nan = horizontal(10, Label::Marking);
+  nan.x1 = std::numeric_limits<float>::quiet_NaN();
+  Segment far = horizontal(20, Label::None);
+  far.x0 = -1e30f;
+  far.x1 = 1e30f;
+  const cv::Mat image(40, 40, CV_8UC3, cv::Scalar::all(0));
+  const std::vector<Segment> segments{nan, far};
+  cv::Mat out;
+  fieldlines::OverlayParams params;
+  params.thickness = 5;
+  params.legend = false;
+  ASSERT_NO_THROW(out = fieldlines::draw_overlay(image, segments, params));
+  // The far segment crosses the image and is drawn (clipped); the NaN one is skipped.
+  EXPECT_EQ(at(out, 20, 20), as_vec(fieldlines::OverlayParams{}.none_colour));
+  EXPECT_EQ(at(out, 30, 10), cv::Vec3b(0, 0, 0));
+}
