@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "angles.hpp"
 #include "pixel_steps.hpp"
 
 namespace fieldlines::elsed {
@@ -11,18 +12,6 @@ namespace {
 
 constexpr int kMaxOutliers = 3;  // consecutive off-line pixels tolerated before leaving a line
 constexpr double kPi = std::numbers::pi;
-
-double wrap_half_turn(double a) {
-  while (a < 0) a += kPi;
-  while (a >= kPi) a -= kPi;
-  return a;
-}
-
-// Distance between two orientations in [0, pi).
-double orientation_distance(double a, double b) {
-  const double d = std::abs(a - b);
-  return std::min(d, kPi - d);
-}
 
 }  // namespace
 

@@ -5,15 +5,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "angles.hpp"
+
 namespace fieldlines::elsed {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-double orientation_distance(double a, double b) {
-  const double d = std::abs(a - b);
-  return std::min(d, kPi - d);
-}
 
 // Bilinear interpolation of an int16 map at (x, y), clamped to the image.
 float sample(const std::vector<std::int16_t>& map, int w, int h, float x, float y) {
@@ -41,9 +38,7 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
   // Normal orientation of the segment in [0, pi), from its endpoints.
   const float sdx = e[2] - e[0], sdy = e[3] - e[1];
   const float along = e[2] > e[0] ? std::atan2(sdy, sdx) : std::atan2(-sdy, -sdx);
-  double normal = along + kPi / 2;
-  while (normal < 0) normal += kPi;
-  while (normal >= kPi) normal -= kPi;
+  const double normal = wrap_half_turn(along + kPi / 2);
   // Line through the endpoints, normalised, to re-project pixels onto it.
   float la = e[1] - e[3], lb = e[2] - e[0], lc = e[0] * e[3] - e[1] * e[2];
   const float ln = std::sqrt(la * la + lb * lb);

@@ -1,0 +1,134 @@
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include "fieldlines/detector.hpp"
+#include "fieldlines/error.hpp"
+
+namespace fieldlines {
+namespace {
+
+// A dark wall above a green carpet with a white line painted across it.
+cv::Mat field_image() {
+  cv::Mat img(480, 640, CV_8UC3, cv::Scalar(50, 130, 40));               // BGR green
+  // Slightly tilted wall edge: anchors are looked for every 10th row, like the method, so a
+  // perfectly horizontal edge between scan rows would never be seen.
+  const std::vector<cv::Point> wall{{0, 0}, {639, 0}, {639, 112}, {0, 92}};
+  cv::fillPoly(img, std::vector<std::vector<cv::Point>>{wall}, cv::Scalar(15, 15, 15), cv::LINE_AA);
+  cv::line(img, {40, 300}, {600, 330}, cv::Scalar(235, 235, 235), 9, cv::LINE_AA);
+  cv::Mat noise(img.size(), img.type());
+  cv::randn(noise, 0, 3);
+  img += noise;
+  return img;
+}
+
+const Segment* longest_with(const std::vector<Segment>& segs, Label label) {
+  const Segment* best = nullptr;
+  for (const Segment& s : segs)
+    if (s.label == label && (!best || s.saliency > best->saliency)) best = &s;
+  return best;
+}
+
+TEST(Detector, FindsTheWhiteLineAsMarkingAndTheWallAsBoundary) {
+  cv::theRNG().state = 7;
+  LineDetector detector;
+  const auto segs = detector.detect(field_image());
+  const Segment* marking = longest_with(segs, Label::Marking);
+  ASSERT_NE(marking, nullptr);
+  // Both edges of the line lie near y = 300 + 30 * (x - 40) / 560, +-5 px.
+  const float expected_y0 = 300 + 30.f * (marking->x0 - 40) / 560;
+  EXPECT_NEAR(marking->y0, expected_y0, 6);
+  EXPECT_GT(std::abs(marking->x1 - marking->x0), 300);
+  // The white-minus-green transition has R and B far stronger than G.
+  const float ry = std::abs(marking->grad_y[0]), gy = std::abs(marking->grad_y[1]), by = std::abs(marking->grad_y[2]);
+  EXPECT_GT(ry, 1.5f * gy);
+  EXPECT_GT(by, 1.5f * gy);
+
+  const Segment* boundary = longest_with(segs, Label::Boundary);
+  ASSERT_NE(boundary, nullptr);
+  EXPECT_NEAR(boundary->y0, 92 + 20.f * boundary->x0 / 639, 2);
+  EXPECT_GT(boundary->grad_y[1], 80);  // green rises going down, image-down convention
+}
+
+TEST(Detector, RepeatedCallsGiveIdenticalResults) {
+  cv::theRNG().state = 11;
+  const cv::Mat img = field_image();
+  LineDetector detector;
+  const auto first = detector.detect(img);
+  std::vector<Segment> again;
+  detector.detect(cv::Mat(200, 300, CV_8UC3, cv::Scalar(0, 255, 0)), again);  // a different size in between
+  detector.detect(img, again);
+  ASSERT_EQ(first.size(), again.size());
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    EXPECT_EQ(first[i].x0, again[i].x0);
+    EXPECT_EQ(first[i].saliency, again[i].saliency);
+    EXPECT_EQ(first[i].grad_y, again[i].grad_y);
+  }
+}
+
+TEST(Detector, AcceptsGreyBgraAnd16BitImages) {
+  cv::theRNG().state = 3;
+  const cv::Mat bgr = field_image();
+  LineDetector detector;
+  const auto reference = detector.detect(bgr);
+  cv::Mat bgra, wide;
+  cv::cvtColor(bgr, bgra, cv::COLOR_BGR2BGRA);
+  EXPECT_EQ(detector.detect(bgra).size(), reference.size());
+  bgr.convertTo(wide, CV_16UC3, 256.0);
+  EXPECT_EQ(detector.detect(wide).size(), reference.size());
+  cv::Mat grey;
+  cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
+  const auto grey_segs = detector.detect(grey);
+  EXPECT_FALSE(grey_segs.empty());
+  for (const Segment& s : grey_segs) {
+    EXPECT_EQ(s.grad_y[0], s.grad_y[1]);  // one channel replicated: equal colour gradients
+    EXPECT_NE(s.label, Label::Marking);   // no colour, so no green-to-white transition
+  }
+}
+
+TEST(Detector, TinyAndFlatImagesGiveNoSegments) {
+  LineDetector detector;
+  EXPECT_TRUE(detector.detect(cv::Mat(1, 1, CV_8UC3, cv::Scalar::all(9))).empty());
+  EXPECT_TRUE(detector.detect(cv::Mat(2, 500, CV_8UC3, cv::Scalar::all(9))).empty());
+  EXPECT_TRUE(detector.detect(cv::Mat(5, 5, CV_8UC3, cv::Scalar::all(9))).empty());
+  EXPECT_TRUE(detector.detect(cv::Mat(480, 640, CV_8UC3, cv::Scalar(0, 255, 0))).empty());
+}
+
+TEST(Detector, RejectsEmptyAndUnsupportedImagesWithAClearError) {
+  LineDetector detector;
+  EXPECT_THROW(detector.detect(cv::Mat()), Error);
+  try {
+    detector.detect(cv::Mat(10, 10, CV_32FC3, cv::Scalar::all(0.5)));
+    FAIL() << "float image accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("depth"), std::string::npos);
+  }
+  EXPECT_THROW(detector.detect(cv::Mat(10, 10, CV_8UC2)), Error);
+}
+
+TEST(Detector, ValidatesParameters) {
+  DetectorParams p;
+  p.gaussian_kernel = 4;
+  EXPECT_THROW(LineDetector{p}, Error);
+  p = {};
+  p.scan_interval = 0;
+  EXPECT_THROW(LineDetector{p}, Error);
+  p = {};
+  p.validation_threshold = std::nan("");
+  EXPECT_THROW(LineDetector{p}, Error);
+}
+
+TEST(Detector, WithoutValidationSaliencyIsTheLength) {
+  cv::theRNG().state = 5;
+  DetectorParams p;
+  p.validate = false;
+  LineDetector detector(p);
+  const auto segs = detector.detect(field_image());
+  ASSERT_FALSE(segs.empty());
+  for (const Segment& s : segs) EXPECT_NEAR(s.saliency, std::hypot(s.x1 - s.x0, s.y1 - s.y0), 1e-3);
+}
+
+}  // namespace
+}  // namespace fieldlines
