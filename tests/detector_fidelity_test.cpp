@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
@@ -63,7 +65,7 @@ TEST(DetectorFidelity, MatchesReferenceSegmentsGradientsAndLabels) {
   const Fidelity f = measure(data);
   const double recall = double(f.matched) / f.reference;
   std::printf("fidelity: reference %d, ours %d (%+.1f%%), matched within 2 px %d (%.1f%%), "
-              "gradients within 1.5 %d (worst %.3f), saliency within 10%% %d, same label %d (%.1f%%)\n",
+              "gradients within 1.5 %d (worst %.5f), saliency within 10%% %d, same label %d (%.1f%%)\n",
               f.reference, f.ours, 100.0 * (f.ours - f.reference) / f.reference, f.matched, 100 * recall,
               f.gradients_close, f.worst_gradient, f.saliency_close, f.same_label,
               100.0 * f.same_label / std::max(1, f.matched));
@@ -72,6 +74,45 @@ TEST(DetectorFidelity, MatchesReferenceSegmentsGradientsAndLabels) {
   EXPECT_EQ(f.gradients_close, f.matched);
   EXPECT_EQ(f.saliency_close, f.matched);
   EXPECT_GE(f.same_label, 0.97 * f.matched);
+}
+
+// The original ELSED with its own defaults (5x5 Gaussian, scan interval 2, minimum length 15):
+// only endpoints are published for it.
+TEST(DetectorFidelity, MatchesOriginalElsedWithItsDefaults) {
+  FIELDLINES_REQUIRE_SHARED("data/elsed-ssl", data);
+  std::ifstream in(data / "reference/segments_elsed_original.csv");
+  std::map<std::string, std::vector<Segment>> reference;
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string image, cell;
+    std::getline(ss, image, ',');
+    Segment s;
+    float* v[] = {&s.x0, &s.y0, &s.x1, &s.y1};
+    for (float* f : v) {
+      std::getline(ss, cell, ',');
+      *f = std::stof(cell);
+    }
+    reference[image].push_back(s);
+  }
+  DetectorParams p;
+  p.gaussian_kernel = 5;
+  p.scan_interval = 2;
+  p.min_line_length = 15;
+  LineDetector detector(p);
+  int total = 0, ours = 0, matched = 0;
+  for (const auto& [image, refs] : reference) {
+    const auto segs = detector.detect(cv::imread((data / "images" / image).string(), cv::IMREAD_COLOR));
+    total += static_cast<int>(refs.size());
+    ours += static_cast<int>(segs.size());
+    for (const Segment& r : refs)
+      matched += std::any_of(segs.begin(), segs.end(), [&](const Segment& s) { return endpoint_error(r, s) <= 2.f; });
+  }
+  std::printf("original ELSED fidelity: reference %d, ours %d, matched within 2 px %d (%.1f%%)\n", total, ours,
+              matched, 100.0 * matched / total);
+  EXPECT_GE(matched, 0.90 * total);
+  EXPECT_LE(ours, 1.10 * total);
 }
 
 }  // namespace
