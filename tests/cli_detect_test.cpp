@@ -1,0 +1,242 @@
+// `fieldlines detect` end to end: the JSON it writes matches the library, batches keep their
+// order with several threads, bad files are reported and skipped, overlays are written.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "cli_test_support.hpp"
+#include "fieldlines/detector.hpp"
+
+namespace fs = std::filesystem;
+using fieldlines::test::CliRun;
+using fieldlines::test::read_text;
+using fieldlines::test::run_cli;
+using fieldlines::test::synthetic_field;
+using nlohmann::json;
+
+namespace {
+
+class CliDetect : public fieldlines::test::TempDirTest {
+ protected:
+  fs::path write_image(const fs::path& relative, const cv::Mat& img) const {
+    const fs::path p = dir_ / relative;
+    fs::create_directories(p.parent_path());
+    EXPECT_TRUE(cv::imwrite(p.string(), img)) << p;
+    return p;
+  }
+  fs::path write_bytes(const fs::path& relative, const std::string& bytes) const {
+    const fs::path p = dir_ / relative;
+    fs::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << bytes;
+    return p;
+  }
+  CliRun run(const std::vector<std::string>& args) const { return run_cli(args, dir_); }
+  json read_json(const fs::path& p) const { return json::parse(read_text(p)); }
+};
+
+std::vector<std::string> image_names(const json& j) {
+  std::vector<std::string> names;
+  for (const auto& img : j.at("images")) names.push_back(img.at("image").get<std::string>());
+  return names;
+}
+
+}  // namespace
+
+TEST_F(CliDetect, HelpShowsOptionsAndExamples) {
+  const CliRun r = run({"detect", "--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* word : {"--json", "--draw", "--threads", "examples:", "fieldlines detect "})
+    EXPECT_NE(r.out.find(word), std::string::npos) << word;
+}
+
+TEST_F(CliDetect, UsageErrorsExitWith2AndSayWhy) {
+  const fs::path img = write_image("a.png", synthetic_field(160, 120));
+  const CliRun none = run({"detect"});
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.err.find("no PATH"), std::string::npos) << none.err;
+  const CliRun unknown = run({"detect", "--bogus", img.string()});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("--bogus"), std::string::npos) << unknown.err;
+  const CliRun threads = run({"detect", "--threads", "0", img.string()});
+  EXPECT_EQ(threads.exit_code, 2);
+  EXPECT_NE(threads.err.find("--threads"), std::string::npos) << threads.err;
+  // The output folder is checked before the batch runs, not after.
+  const CliRun json_dir = run({"detect", "--json", (dir_ / "missing" / "out.json").string(), img.string()});
+  EXPECT_EQ(json_dir.exit_code, 2);
+  EXPECT_NE(json_dir.err.find("does not exist"), std::string::npos) << json_dir.err;
+  EXPECT_EQ(json_dir.out.find("segments ("), std::string::npos) << "ran the batch: " << json_dir.out;
+}
+
+TEST_F(CliDetect, JsonHasTheSchemaAndTheLibrarysExactSegments) {
+  const cv::Mat img = synthetic_field(640, 480);
+  const fs::path path = write_image("field.png", img);
+  const fs::path out = dir_ / "out.json";
+  const CliRun r = run({"detect", "--json", out.string(), path.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = read_json(out);
+  ASSERT_EQ(j.at("images").size(), 1u);
+  EXPECT_TRUE(j.at("errors").empty());
+  const json& entry = j["images"][0];
+  EXPECT_EQ(entry.at("image"), "field.png");
+  EXPECT_EQ(entry.at("path"), path.string());
+  EXPECT_EQ(entry.at("width"), 640);
+  EXPECT_EQ(entry.at("height"), 480);
+  EXPECT_GE(entry.at("detect_ms").get<double>(), 0.0);
+
+  // The same detector in this process gives the same segments, in the same order, with the
+  // same R,G,B / image-down gradients (the JSON is a plain dump of fieldlines::Segment).
+  fieldlines::LineDetector detector;
+  const auto expected = detector.detect(img);
+  const json& segments = entry.at("segments");
+  ASSERT_EQ(segments.size(), expected.size());
+  ASSERT_FALSE(expected.empty()) << "white lines on green must give segments";
+  std::set<std::string> labels;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const json& s = segments[i];
+    const auto& e = expected[i];
+    EXPECT_FLOAT_EQ(s.at("x0").get<float>(), e.x0);
+    EXPECT_FLOAT_EQ(s.at("y0").get<float>(), e.y0);
+    EXPECT_FLOAT_EQ(s.at("x1").get<float>(), e.x1);
+    EXPECT_FLOAT_EQ(s.at("y1").get<float>(), e.y1);
+    EXPECT_FLOAT_EQ(s.at("saliency").get<float>(), e.saliency);
+    ASSERT_EQ(s.at("grad_x").size(), 3u);
+    ASSERT_EQ(s.at("grad_y").size(), 3u);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_FLOAT_EQ(s["grad_x"][c].get<float>(), e.grad_x[static_cast<std::size_t>(c)]);
+      EXPECT_FLOAT_EQ(s["grad_y"][c].get<float>(), e.grad_y[static_cast<std::size_t>(c)]);
+    }
+    EXPECT_EQ(s.at("label").get<std::string>(), fieldlines::to_string(e.label));
+    labels.insert(s["label"].get<std::string>());
+  }
+  for (const auto& l : labels) EXPECT_TRUE(l == "marking" || l == "boundary" || l == "none") << l;
+  EXPECT_TRUE(labels.count("marking")) << "the painted lines are field markings";
+  // The stdout summary names the image and its counts.
+  EXPECT_NE(r.out.find("field.png: " + std::to_string(expected.size()) + " segments"), std::string::npos) << r.out;
+}
+
+TEST_F(CliDetect, FoldersAreSortedAndThreadsKeepTheInputOrder) {
+  std::vector<std::string> names;
+  for (int i = 0; i < 7; ++i) {
+    const std::string name = "frame_" + std::string(1, static_cast<char>('g' - i)) + ".png";  // written out of order
+    write_image(fs::path("batch") / name, synthetic_field(320, 240, i * 7));
+    names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  const fs::path single = write_image("single.png", synthetic_field(200, 150, 3));
+  const fs::path one = dir_ / "one.json", two = dir_ / "two.json";
+  // An explicit file after the folder stays after it.
+  ASSERT_EQ(run({"detect", "--quiet", "--json", one.string(), (dir_ / "batch").string(), single.string()}).exit_code, 0);
+  const CliRun r = run({"detect", "--threads", "3", "--json", two.string(), (dir_ / "batch").string(), single.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  names.push_back("single.png");
+  const json a = read_json(one), b = read_json(two);
+  EXPECT_EQ(image_names(a), names);
+  EXPECT_EQ(image_names(b), names);
+  // Same segments whatever the thread count (timings aside).
+  for (std::size_t i = 0; i < names.size(); ++i)
+    EXPECT_EQ(a["images"][i]["segments"], b["images"][i]["segments"]) << names[i];
+  // --quiet printed nothing; the default prints one line per image plus a total.
+  EXPECT_NE(r.out.find(std::to_string(names.size()) + " images"), std::string::npos) << r.out;
+}
+
+TEST_F(CliDetect, BadFilesAreReportedSkippedAndExitWith1) {
+  write_image("mixed/a_good.png", synthetic_field(320, 240));
+  write_bytes("mixed/b_corrupt.png", std::string(2000, '\x42'));
+  write_bytes("mixed/c_empty.jpg", "");
+  write_image("mixed/d_good.png", synthetic_field(320, 240, 5));
+  fs::create_directories(dir_ / "empty_folder");
+  const fs::path out = dir_ / "out.json";
+  const CliRun r = run({"detect", "--json", out.string(), (dir_ / "mixed").string(),
+                        (dir_ / "missing.png").string(), (dir_ / "empty_folder").string()});
+  EXPECT_EQ(r.exit_code, 1);
+  for (const char* msg : {"b_corrupt.png: not a decodable image", "c_empty.jpg: empty file",
+                          "missing.png: no such file", "empty_folder: folder holds no image",
+                          "4 of 6 inputs failed"})
+    EXPECT_NE(r.err.find(msg), std::string::npos) << msg << "\n" << r.err;
+  // The good images are still processed and written, the bad ones listed with their error.
+  const json j = read_json(out);
+  EXPECT_EQ(image_names(j), (std::vector<std::string>{"a_good.png", "d_good.png"}));
+  ASSERT_EQ(j.at("errors").size(), 4u);
+  for (const auto& e : j["errors"]) {
+    EXPECT_FALSE(e.at("path").get<std::string>().empty());
+    EXPECT_FALSE(e.at("error").get<std::string>().empty());
+  }
+}
+
+TEST_F(CliDetect, UnusualImagesGetAResultOrAClearMessage) {
+  const cv::Mat bgr = synthetic_field(320, 240);
+  cv::Mat grey, bgra, deep;
+  cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
+  cv::cvtColor(bgr, bgra, cv::COLOR_BGR2BGRA);
+  bgr.convertTo(deep, CV_16U, 257.0);
+  write_image("odd/grey.png", grey);
+  write_image("odd/alpha.png", bgra);
+  write_image("odd/deep.png", deep);
+  write_image("odd/tiny.png", cv::Mat(2, 2, CV_8UC3, cv::Scalar(1, 2, 3)));
+  write_image("odd/float.tiff", cv::Mat(20, 20, CV_32FC3, cv::Scalar(0.5, 0.5, 0.5)));
+  // A PNG header claiming 60000 x 60000 pixels: refused before any pixel is allocated.
+  std::string png = read_text(write_image("odd/huge.png", bgr));
+  for (const std::size_t at : {16u, 20u}) {
+    png[at] = 0;
+    png[at + 1] = 0;
+    png[at + 2] = static_cast<char>(60000 >> 8);
+    png[at + 3] = static_cast<char>(60000 & 0xff);
+  }
+  write_bytes("odd/huge.png", png);
+  const fs::path out = dir_ / "out.json";
+  const CliRun r = run({"detect", "--json", out.string(), "--draw", (dir_ / "overlays").string(), (dir_ / "odd").string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("float.tiff: unsupported pixel type 32-bit float 3-channel"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("huge.png: image is 60000x60000"), std::string::npos) << r.err;
+  const json j = read_json(out);
+  EXPECT_EQ(image_names(j), (std::vector<std::string>{"alpha.png", "deep.png", "grey.png", "tiny.png"}));
+  for (const auto& img : j["images"]) {
+    const std::string name = img["image"];
+    if (name == "tiny.png") EXPECT_TRUE(img["segments"].empty());
+    else EXPECT_FALSE(img["segments"].empty()) << name;
+    // Every processed image, whatever its type, gets an 8-bit colour overlay of its size.
+    const cv::Mat overlay = cv::imread((dir_ / "overlays" / name).string(), cv::IMREAD_UNCHANGED);
+    ASSERT_FALSE(overlay.empty()) << name;
+    EXPECT_EQ(overlay.type(), CV_8UC3) << name;
+    EXPECT_EQ(overlay.cols, img["width"].get<int>()) << name;
+  }
+}
+
+TEST_F(CliDetect, LargeImageIsProcessed) {
+  const fs::path big = write_image("big.jpg", synthetic_field(4000, 3000));
+  const fs::path out = dir_ / "out.json";
+  const CliRun r = run({"detect", "--json", out.string(), big.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = read_json(out);
+  EXPECT_EQ(j["images"][0]["width"], 4000);
+  EXPECT_FALSE(j["images"][0]["segments"].empty());
+}
+
+TEST_F(CliDetect, OverlaysAreNamedAfterTheirImagesWithoutClashes) {
+  const fs::path a = write_image("one/frame.png", synthetic_field(320, 240));
+  const fs::path b = write_image("two/frame.jpg", synthetic_field(320, 240, 9));
+  const fs::path draw = dir_ / "draw";
+  const CliRun r = run({"detect", "--draw", draw.string(), a.string(), b.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("overlays written to"), std::string::npos);
+  const cv::Mat first = cv::imread((draw / "frame.png").string());
+  const cv::Mat second = cv::imread((draw / "frame-2.png").string());
+  ASSERT_FALSE(first.empty());
+  ASSERT_FALSE(second.empty());
+  EXPECT_EQ(first.size(), cv::Size(320, 240));
+  // The overlay shows something on top of the image (segments and legend).
+  EXPECT_GT(cv::norm(first, cv::imread(a.string()), cv::NORM_L1), 0.0);
+  // Drawing into the images' own folder never overwrites an input.
+  const cv::Mat before = cv::imread(a.string());
+  ASSERT_EQ(run({"detect", "--draw", (dir_ / "one").string(), a.string()}).exit_code, 0);
+  EXPECT_EQ(cv::norm(cv::imread(a.string()), before, cv::NORM_INF), 0.0);
+  EXPECT_TRUE(fs::exists(dir_ / "one" / "frame-2.png"));
+}
