@@ -1,0 +1,77 @@
+// The robot's thresholds file: round trip, version and range checks, clear errors.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "fieldlines/atomic_file.hpp"
+#include "fieldlines/error.hpp"
+#include "fieldlines/thresholds_file.hpp"
+
+namespace fl = fieldlines;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("fl_thr_" + name); }
+
+std::string load_error(const std::string& text) {
+  const fs::path p = temp("bad.json");
+  std::ofstream(p) << text;
+  try {
+    fl::load_thresholds_file(p);
+  } catch (const fl::Error& e) {
+    fs::remove(p);
+    return e.what();
+  }
+  fs::remove(p);
+  return "";
+}
+
+fl::ThresholdsFile sample() {
+  fl::ThresholdsFile f;
+  f.detector.gradient_threshold = 42;
+  f.detector.junction_sizes = {3, 5};
+  f.thresholds.marking.thresholds = {12.5f, 33.25f, 61.f};
+  f.thresholds.boundary.thresholds = {20.f, 45.f, 80.f};
+  f.thresholds.mode = fl::GradientMode::Normal;
+  f.provenance = {{"seed", 3}, {"train", {{"marking", {{"tp", 10}}}}}};
+  return f;
+}
+
+}  // namespace
+
+TEST(ThresholdsFile, RoundTrips) {
+  const fs::path p = temp("ok.json");
+  const fl::ThresholdsFile f = sample();
+  fl::save_thresholds_file(p, f);
+  const fl::ThresholdsFile g = fl::load_thresholds_file(p);
+  fs::remove(p);
+  EXPECT_EQ(g.detector, f.detector);
+  EXPECT_EQ(g.thresholds, f.thresholds);
+  EXPECT_EQ(g.provenance, f.provenance);
+}
+
+TEST(ThresholdsFile, RejectsNewerVersionsMalformedJsonAndBadRanges) {
+  nlohmann::json j = fl::to_json(sample());
+  j["version"] = fl::kThresholdsFileVersion + 1;
+  EXPECT_NE(load_error(j.dump()).find("newer"), std::string::npos);
+  EXPECT_NE(load_error("{\"format\": ").find("malformed JSON"), std::string::npos);
+  EXPECT_NE(load_error("{}").find("not a fieldlines thresholds file"), std::string::npos);
+  j = fl::to_json(sample());
+  j["classes"]["marking"]["max_angle_deg"] = 200;
+  EXPECT_NE(load_error(j.dump()).find("classes.marking.max_angle_deg"), std::string::npos);
+  j = fl::to_json(sample());
+  j["classes"]["boundary"].erase("min_length");
+  EXPECT_NE(load_error(j.dump()).find("min_length"), std::string::npos);
+  j = fl::to_json(sample());
+  j["detector"]["scan_interval"] = 0;
+  EXPECT_NE(load_error(j.dump()).find("scan_interval"), std::string::npos);
+  j = fl::to_json(sample());
+  j["gradient_mode"] = "diagonal";
+  EXPECT_NE(load_error(j.dump()).find("gradient_mode"), std::string::npos);
+  j = fl::to_json(sample());
+  j["classes"]["marking"]["from"] = {1, 2};
+  EXPECT_NE(load_error(j.dump()).find("from"), std::string::npos);
+  EXPECT_NE(load_error("").find("bad.json"), std::string::npos);
+}
