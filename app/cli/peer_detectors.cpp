@@ -1,0 +1,71 @@
+#include "peer_detectors.hpp"
+
+#include <memory>
+
+#include <opencv2/imgproc.hpp>
+#include <opencv2/ximgproc/edge_drawing.hpp>
+#include <opencv2/ximgproc/fast_line_detector.hpp>
+
+namespace fieldlines::cli {
+namespace {
+
+// Buffers shared by the OpenCV peers: reused so no peer pays for allocation we do not.
+struct GreyLines {
+  cv::Mat grey;
+  std::vector<cv::Vec4f> lines;
+};
+
+}  // namespace
+
+std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, const Thresholds& thresholds) {
+  std::vector<TimedDetector> out;
+
+  auto ours = std::make_shared<LineDetector>(params, thresholds);
+  auto segments = std::make_shared<std::vector<Segment>>();
+  out.push_back({"fieldlines", "fieldlines LineDetector: ELSED + colour gradients + classification",
+                 [ours, segments](const cv::Mat& bgr) {
+                   ours->detect(bgr, *segments);
+                   return segments->size();
+                 }});
+
+  auto ed = cv::ximgproc::createEdgeDrawing();
+  auto ed_state = std::make_shared<GreyLines>();
+  out.push_back({"edlines", "OpenCV ximgproc EdgeDrawing, EDLines (detectEdges + detectLines)",
+                 [ed, ed_state](const cv::Mat& bgr) {
+                   cv::cvtColor(bgr, ed_state->grey, cv::COLOR_BGR2GRAY);
+                   ed->detectEdges(ed_state->grey);
+                   ed->detectLines(ed_state->lines);
+                   return ed_state->lines.size();
+                 }});
+
+  auto fld = cv::ximgproc::createFastLineDetector();
+  auto fld_state = std::make_shared<GreyLines>();
+  out.push_back({"fld", "OpenCV ximgproc FastLineDetector", [fld, fld_state](const cv::Mat& bgr) {
+                   cv::cvtColor(bgr, fld_state->grey, cv::COLOR_BGR2GRAY);
+                   fld->detect(fld_state->grey, fld_state->lines);
+                   return fld_state->lines.size();
+                 }});
+
+  auto lsd = cv::createLineSegmentDetector();
+  auto lsd_state = std::make_shared<GreyLines>();
+  out.push_back({"lsd", "OpenCV LineSegmentDetector (LSD)", [lsd, lsd_state](const cv::Mat& bgr) {
+                   cv::cvtColor(bgr, lsd_state->grey, cv::COLOR_BGR2GRAY);
+                   lsd->detect(lsd_state->grey, lsd_state->lines);
+                   return lsd_state->lines.size();
+                 }});
+
+  struct Floor {
+    cv::Mat grey, blurred, gx, gy;
+  };
+  auto floor = std::make_shared<Floor>();
+  out.push_back({"floor", "cvtColor + 5x5 Gaussian + Sobel x and y (no segments)", [floor](const cv::Mat& bgr) {
+                   cv::cvtColor(bgr, floor->grey, cv::COLOR_BGR2GRAY);
+                   cv::GaussianBlur(floor->grey, floor->blurred, {5, 5}, 0);
+                   cv::Sobel(floor->blurred, floor->gx, CV_16S, 1, 0);
+                   cv::Sobel(floor->blurred, floor->gy, CV_16S, 0, 1);
+                   return std::size_t{0};
+                 }});
+  return out;
+}
+
+}  // namespace fieldlines::cli

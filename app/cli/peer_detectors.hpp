@@ -1,0 +1,30 @@
+#pragma once
+// The detectors `fieldlines bench` and bench/detector_bench time against each other, each
+// behind one call that takes the same 8-bit BGR image (grey conversion included in the call).
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core/mat.hpp>
+
+#include "fieldlines/classifier.hpp"
+#include "fieldlines/detector.hpp"
+
+namespace fieldlines::cli {
+
+struct TimedDetector {
+  std::string name;  // "fieldlines", "edlines", "fld", "lsd", "floor"
+  std::string what;  // one line for tables and --help
+  // Runs on a BGR image and returns the number of segments found. Owns its buffers and reuses
+  // them between calls, so repeated calls measure the steady state.
+  std::function<std::size_t(const cv::Mat& bgr)> run;
+};
+
+// In this order: ours (detect + classify), OpenCV's EdgeDrawing in EDLines mode (detectEdges +
+// detectLines, default parameters), FastLineDetector and LSD (default parameters), and the
+// floor every gradient-based detector pays: cvtColor + 5x5 Gaussian + Sobel x and y (16-bit).
+std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params = {},
+                                                const Thresholds& thresholds = {});
+
+}  // namespace fieldlines::cli

@@ -1,0 +1,84 @@
+// `fieldlines bench` end to end: the JSON schema, all five detectors, bad inputs. Speed itself is
+// not asserted here (that is what the benchmark is for); only that the numbers are sane.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "cli_test_support.hpp"
+
+namespace fs = std::filesystem;
+using fieldlines::test::CliRun;
+using fieldlines::test::read_text;
+using fieldlines::test::run_cli;
+using fieldlines::test::synthetic_field;
+using nlohmann::json;
+
+namespace {
+
+class CliBench : public fieldlines::test::TempDirTest {
+ protected:
+  fs::path write_image(const std::string& name, const cv::Mat& img) const {
+    const fs::path p = dir_ / name;
+    EXPECT_TRUE(cv::imwrite(p.string(), img)) << p;
+    return p;
+  }
+};
+
+}  // namespace
+
+TEST_F(CliBench, HelpNamesTheDetectorsAndExamples) {
+  const CliRun r = run_cli({"bench", "--help"}, dir_);
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* word : {"edlines", "fld", "lsd", "floor", "--repeat", "--json", "examples:"})
+    EXPECT_NE(r.out.find(word), std::string::npos) << word;
+}
+
+TEST_F(CliBench, JsonListsAllFiveDetectorsWithSaneNumbers) {
+  const fs::path a = write_image("a.png", synthetic_field(640, 480));
+  const fs::path b = write_image("b.png", synthetic_field(640, 480, 11));
+  const fs::path out = dir_ / "bench.json";
+  const CliRun r = run_cli({"bench", "--repeat", "2", "--json", out.string(), a.string(), b.string()}, dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(read_text(out));
+  EXPECT_EQ(j.at("images"), 2);
+  std::vector<std::string> names;
+  for (const auto& d : j.at("detectors")) {
+    names.push_back(d.at("name"));
+    const double median = d.at("median_ms"), p90 = d.at("p90_ms"), segments = d.at("segments_per_image");
+    EXPECT_TRUE(std::isfinite(median) && median > 0) << d;
+    EXPECT_GE(p90, median) << d;
+    EXPECT_GE(segments, 0) << d;
+    // The floor finds no segments; every real detector finds the painted lines.
+    if (d["name"] == "floor") EXPECT_EQ(segments, 0) << d;
+    else EXPECT_GT(segments, 0) << d;
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"fieldlines", "edlines", "fld", "lsd", "floor"}));
+  // The table shows the ratios and the target check.
+  EXPECT_NE(r.out.find("ours/this"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("fieldlines/edlines = "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("fieldlines/floor = "), std::string::npos) << r.out;
+}
+
+TEST_F(CliBench, BadImagesAreSkippedAndReported) {
+  const fs::path good = write_image("good.png", synthetic_field(320, 240));
+  const fs::path bad = dir_ / "bad.png";
+  std::ofstream(bad, std::ios::binary) << "not an image";
+  const fs::path out = dir_ / "bench.json";
+  const CliRun r = run_cli({"bench", "--repeat", "1", "--json", out.string(), good.string(), bad.string()}, dir_);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("bad.png: not a decodable image"), std::string::npos) << r.err;
+  EXPECT_EQ(json::parse(read_text(out)).at("images"), 1);
+
+  // Nothing loadable at all is fatal (exit 2) and says so.
+  const CliRun none = run_cli({"bench", bad.string()}, dir_);
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.err.find("no image could be loaded"), std::string::npos) << none.err;
+  const CliRun usage = run_cli({"bench", "--repeat", "zero", good.string()}, dir_);
+  EXPECT_EQ(usage.exit_code, 2);
+  EXPECT_NE(usage.err.find("--repeat"), std::string::npos) << usage.err;
+}
