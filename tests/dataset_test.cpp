@@ -1,0 +1,187 @@
+// Project files (atomic, versioned, never overwriting what they cannot read), label
+// re-attachment after re-detection, and the undo/redo command stack.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "fieldlines/atomic_file.hpp"
+#include "fieldlines/dataset.hpp"
+#include "fieldlines/error.hpp"
+#include "fieldlines/label_commands.hpp"
+#include "fieldlines/reference_csv.hpp"
+#include "shared_data.hpp"
+
+namespace fl = fieldlines;
+namespace fs = std::filesystem;
+
+namespace {
+
+fl::Segment seg(float x0, float y0, float x1, float y1, fl::Label label = fl::Label::Unlabelled) {
+  fl::Segment s{x0, y0, x1, y1, std::hypot(x1 - x0, y1 - y0), {1.5f, -2.f, 3.f}, {-4.f, 5.25f, 6.f}, label};
+  return s;
+}
+
+fl::Project sample() {
+  fl::Project p;
+  p.detector.gradient_threshold = 25;
+  p.thresholds.marking.thresholds.min_length = 77;
+  p.images.push_back({"frames/a.png", {seg(0, 0, 100, 0, fl::Label::Marking), seg(0, 50, 0, 150)}, 4.5});
+  p.images.push_back({"frames/b.png", {seg(10, 10, 200, 20, fl::Label::None)}, 2});
+  return p;
+}
+
+class ProjectFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("fl_project_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+std::string error_of(auto&& f) {
+  try {
+    f();
+  } catch (const fl::Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_F(ProjectFiles, SaveLoadRoundTrip) {
+  const fl::Project p = sample();
+  const fs::path file = dir_ / "labels.json";
+  p.save(file);
+  const fl::Project q = fl::Project::load(file);
+  EXPECT_EQ(q.detector, p.detector);
+  EXPECT_EQ(q.thresholds, p.thresholds);
+  ASSERT_EQ(q.images.size(), 2u);
+  EXPECT_EQ(q.images[0].path, "frames/a.png");
+  EXPECT_DOUBLE_EQ(q.images[0].detect_ms, 4.5);
+  ASSERT_EQ(q.images[0].segments.size(), 2u);
+  EXPECT_EQ(q.images[0].segments[0].label, fl::Label::Marking);
+  EXPECT_EQ(q.images[0].segments[1].label, fl::Label::Unlabelled);
+  EXPECT_EQ(q.images[0].segments[0].grad_y, p.images[0].segments[0].grad_y);
+  EXPECT_EQ(q.labelled_count(), 2u);
+  EXPECT_EQ(q.labelled().size(), 2u);
+  EXPECT_EQ(fl::Project::resolve(file, "frames/a.png"), dir_ / "frames/a.png");
+}
+
+TEST_F(ProjectFiles, DamagedOrNewerFilesGiveClearErrorsAndAreNeverOverwritten) {
+  const fs::path file = dir_ / "labels.json";
+  sample().save(file);
+  std::string text = fl::read_file(file);
+  // Truncated (e.g. a crash in another tool): load fails, save refuses.
+  std::ofstream(file, std::ios::trunc) << text.substr(0, text.size() / 2);
+  const std::string damaged = fl::read_file(file);
+  EXPECT_NE(error_of([&] { fl::Project::load(file); }).find("damaged"), std::string::npos);
+  EXPECT_NE(error_of([&] { sample().save(file); }).find("refusing to overwrite"), std::string::npos);
+  EXPECT_EQ(fl::read_file(file), damaged);
+  // Newer version.
+  const std::size_t at = text.find("\"version\": 1");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 12, "\"version\": 9");
+  std::ofstream(file, std::ios::trunc) << text;
+  EXPECT_NE(error_of([&] { fl::Project::load(file); }).find("newer"), std::string::npos);
+  EXPECT_NE(error_of([&] { sample().save(file); }).find("refusing"), std::string::npos);
+  EXPECT_EQ(fl::read_file(file), text);
+  // A bad label names the segment.
+  text.replace(at, 12, "\"version\": 1");
+  text.replace(text.find("\"marking\"\n"), 9, "\"maybe\"  ");  // a segment label, not the class key
+  std::ofstream(file, std::ios::trunc) << text;
+  EXPECT_NE(error_of([&] { fl::Project::load(file); }).find("images[0].segments[0]"), std::string::npos);
+}
+
+TEST(Reattach, KeepsLabelsOfMatchingSegmentsAndCountsTheLost) {
+  const std::vector<fl::Segment> old = {seg(0, 0, 100, 0, fl::Label::Marking),
+                                        seg(0, 50, 0, 150, fl::Label::Boundary),
+                                        seg(300, 300, 400, 400, fl::Label::None), seg(500, 0, 600, 0)};
+  std::vector<fl::Segment> fresh = {
+      seg(2, 1, 98, 1.5f),         // same line, slightly moved: keeps marking
+      seg(0.5f, 60, 1, 100),       // a piece of the vertical one: boundary
+      seg(0.5f, 100, 1, 150),      // the other piece: boundary
+      seg(300, 300, 400, 330),     // same start, very different angle: not a match
+      seg(500, 0, 600, 0)};        // matches only an unlabelled one
+  const fl::ReattachStats st = fl::reattach_labels(old, fresh);
+  EXPECT_EQ(fresh[0].label, fl::Label::Marking);
+  EXPECT_EQ(fresh[1].label, fl::Label::Boundary);
+  EXPECT_EQ(fresh[2].label, fl::Label::Boundary);
+  EXPECT_EQ(fresh[3].label, fl::Label::Unlabelled);
+  EXPECT_EQ(fresh[4].label, fl::Label::Unlabelled);
+  EXPECT_EQ(st.labelled_before, 3u);
+  EXPECT_EQ(st.kept, 2u);
+  EXPECT_EQ(st.lost, 1u);
+  EXPECT_EQ(st.labelled_after, 3u);
+  // A parallel line 10 px away is another line.
+  std::vector<fl::Segment> shifted = {seg(0, 10, 100, 10)};
+  EXPECT_EQ(fl::reattach_labels(old, shifted).lost, 3u);
+  EXPECT_EQ(shifted[0].label, fl::Label::Unlabelled);
+
+  fl::Project p = sample();
+  const fl::ReattachStats pst = p.replace_segments(0, {seg(1, 0, 90, 0)});
+  EXPECT_EQ(pst.kept, 1u);
+  EXPECT_EQ(p.images[0].segments.size(), 1u);
+  EXPECT_EQ(p.images[0].segments[0].label, fl::Label::Marking);
+  EXPECT_THROW(p.replace_segments(5, {}), fl::Error);
+}
+
+TEST(LabelHistory, UndoRedoSingleAndBatchEdits) {
+  fl::Project p = sample();
+  fl::LabelHistory h;
+  EXPECT_FALSE(h.undo(p));
+  const std::vector<fl::SegmentRef> one = {{0, 1}};
+  EXPECT_TRUE(h.apply(p, one, fl::Label::Boundary, "one"));
+  EXPECT_EQ(p.images[0].segments[1].label, fl::Label::Boundary);
+  const std::vector<fl::SegmentRef> batch = {{0, 0}, {0, 1}, {1, 0}};
+  EXPECT_TRUE(h.apply(p, batch, fl::Label::None, "batch"));
+  EXPECT_EQ(h.next_undo()->edits.size(), 2u);  // {1,0} was already none
+  EXPECT_FALSE(h.apply(p, batch, fl::Label::None));  // changes nothing: no step
+  EXPECT_TRUE(h.undo(p));
+  EXPECT_EQ(p.images[0].segments[0].label, fl::Label::Marking);
+  EXPECT_EQ(p.images[0].segments[1].label, fl::Label::Boundary);
+  EXPECT_EQ(h.next_redo()->description, "batch");
+  EXPECT_TRUE(h.undo(p));
+  EXPECT_EQ(p.images[0].segments[1].label, fl::Label::Unlabelled);
+  EXPECT_FALSE(h.can_undo());
+  EXPECT_TRUE(h.redo(p));
+  EXPECT_TRUE(h.redo(p));
+  EXPECT_EQ(p.images[0].segments[0].label, fl::Label::None);
+  EXPECT_FALSE(h.redo(p));
+  // A new edit after undo drops the redo branch.
+  h.undo(p);
+  const std::vector<fl::SegmentRef> other = {{1, 0}};
+  h.apply(p, other, fl::Label::Marking);
+  EXPECT_FALSE(h.can_redo());
+  // Out of range: error, nothing changed.
+  const fl::Project before = p;
+  const std::vector<fl::SegmentRef> bad = {{0, 0}, {0, 7}};
+  EXPECT_THROW(h.apply(p, bad, fl::Label::Marking), fl::Error);
+  EXPECT_EQ(p.images[0].segments[0].label, before.images[0].segments[0].label);
+}
+
+TEST(ProjectShared, ReferenceCsvBecomesAProjectAndBackLosslessly) {
+  FIELDLINES_REQUIRE_SHARED("data/elsed-ssl/annotations/D4_humanoid_kid.csv", d4);
+  const auto rows = fl::read_reference_csv(d4);
+  const fl::Project p = fl::project_from_reference_rows(rows);
+  EXPECT_EQ(p.labelled_count(), rows.size());
+  const fs::path file = fs::temp_directory_path() / "fl_project_d4.json";
+  fs::remove(file);
+  p.save(file);
+  const fl::Project q = fl::Project::load(file);
+  fs::remove(file);
+  const fl::LabelledSet a = fl::labelled_set_from_rows(rows), b = q.labelled();
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(a.images.size(), b.images.size());
+  std::size_t same = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    same += a.segments[i].grad_x == b.segments[i].grad_x && a.segments[i].label == b.segments[i].label &&
+            a.images[a.image_of[i]] == b.images[b.image_of[i]];
+  // Rows of one image are contiguous in these files, so order is preserved too.
+  EXPECT_EQ(same, a.size());
+}
