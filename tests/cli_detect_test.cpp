@@ -14,6 +14,8 @@
 
 #include "cli_test_support.hpp"
 #include "fieldlines/detector.hpp"
+#include "fieldlines/reference_csv.hpp"
+#include "fieldlines/thresholds_file.hpp"
 
 namespace fs = std::filesystem;
 using fieldlines::test::CliRun;
@@ -239,4 +241,72 @@ TEST_F(CliDetect, OverlaysAreNamedAfterTheirImagesWithoutClashes) {
   ASSERT_EQ(run({"detect", "--draw", (dir_ / "one").string(), a.string()}).exit_code, 0);
   EXPECT_EQ(cv::norm(cv::imread(a.string()), before, cv::NORM_INF), 0.0);
   EXPECT_TRUE(fs::exists(dir_ / "one" / "frame-2.png"));
+}
+
+TEST_F(CliDetect, CsvIsTheReferenceFormatWithTheSameSegments) {
+  const fs::path a = write_image("a.png", synthetic_field(640, 480));
+  const fs::path b = write_image("b.png", synthetic_field(640, 480, 13));
+  const fs::path csv = dir_ / "out.csv", js = dir_ / "out.json";
+  const CliRun r = run({"detect", "--csv", csv.string(), "--json", js.string(), a.string(), b.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Read back with the library's reader: it converts B,G,R and the reference's y sign back.
+  const auto rows = fieldlines::read_reference_csv(csv);
+  const json j = read_json(js);
+  std::size_t k = 0;
+  for (const auto& img : j["images"]) {
+    for (const auto& s : img["segments"]) {
+      ASSERT_LT(k, rows.size());
+      const auto& row = rows[k++];
+      EXPECT_EQ(row.image, img["image"].get<std::string>());
+      EXPECT_FLOAT_EQ(row.segment.x0, s["x0"].get<float>());
+      EXPECT_FLOAT_EQ(row.segment.y1, s["y1"].get<float>());
+      EXPECT_FLOAT_EQ(row.segment.saliency, s["saliency"].get<float>());
+      for (std::size_t c = 0; c < 3; ++c) {
+        EXPECT_FLOAT_EQ(row.segment.grad_x[c], s["grad_x"][c].get<float>());
+        EXPECT_FLOAT_EQ(row.segment.grad_y[c], s["grad_y"][c].get<float>());
+      }
+      EXPECT_EQ(fieldlines::to_string(row.segment.label), s["label"].get<std::string>());
+    }
+  }
+  EXPECT_EQ(k, rows.size());
+  EXPECT_GT(rows.size(), 0u);
+  // The file itself is in the reference's layout.
+  EXPECT_EQ(read_text(csv).rfind("img_path,x0,y0,x1,y1,grad_Bx,grad_Gx,grad_Rx,grad_By,grad_Gy,grad_Ry,segment_length", 0), 0u);
+}
+
+TEST_F(CliDetect, ThresholdsFileChangesTheLabelsAndTheDetector) {
+  const fs::path img = write_image("a.png", synthetic_field(640, 480));
+  const fs::path base = dir_ / "base.json", strict = dir_ / "strict.json", short_lines = dir_ / "short.json";
+  ASSERT_EQ(run({"detect", "--json", base.string(), img.string()}).exit_code, 0);
+
+  // Classes that nothing can reach: same segments, all labelled none.
+  fieldlines::ThresholdsFile file;
+  file.thresholds.marking.thresholds.min_length = 1e5f;
+  file.thresholds.boundary.thresholds.min_length = 1e5f;
+  fieldlines::save_thresholds_file(dir_ / "strict_thresholds.json", file);
+  const CliRun r = run({"detect", "--thresholds", (dir_ / "strict_thresholds.json").string(), "--json", strict.string(), img.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json a = read_json(base)["images"][0]["segments"], b = read_json(strict)["images"][0]["segments"];
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_FALSE(a.empty());
+  bool any_marking = false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    any_marking |= a[i]["label"] == "marking";
+    EXPECT_EQ(b[i]["label"], "none");
+    EXPECT_EQ(a[i]["x0"], b[i]["x0"]);
+  }
+  EXPECT_TRUE(any_marking);
+
+  // Detector parameters come from the file too: lines longer than the image find nothing.
+  fieldlines::ThresholdsFile longer;
+  longer.detector.min_line_length = 2000;
+  fieldlines::save_thresholds_file(dir_ / "long.json", longer);
+  ASSERT_EQ(run({"detect", "--thresholds", (dir_ / "long.json").string(), "--json", short_lines.string(), img.string()}).exit_code, 0);
+  EXPECT_TRUE(read_json(short_lines)["images"][0]["segments"].empty());
+
+  // A broken thresholds file is fatal before any image is read, and names the file.
+  const fs::path broken = write_bytes("broken.json", "{\"format\": ");
+  const CliRun bad = run({"detect", "--thresholds", broken.string(), img.string()});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("broken.json"), std::string::npos) << bad.err;
 }

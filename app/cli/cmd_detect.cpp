@@ -18,6 +18,8 @@
 #include "fieldlines/error.hpp"
 #include "fieldlines/image_io.hpp"
 #include "fieldlines/overlay.hpp"
+#include "fieldlines/reference_csv.hpp"
+#include "fieldlines/thresholds_file.hpp"
 #include "image_inputs.hpp"
 #include "output_file.hpp"
 #include "parallel_batch.hpp"
@@ -35,7 +37,11 @@ file-name order), measures their colour gradients and classifies them as field m
 field boundary or none. Prints one summary line per image on stdout.
 
 options:
+  --thresholds FILE detector parameters and classification thresholds from a thresholds
+                    file (as `fieldlines train` writes it); default: the reference's
   --json OUT        write every segment to OUT (schema: docs/detect_and_bench.md)
+  --csv OUT         write every segment in the reference annotation CSV format
+                    (img_path = file name, B,G,R channels, reference y sign, label columns)
   --draw DIR        write an overlay per image to DIR/<name>.png
                     (marking magenta, boundary orange, none azure; legend top-left)
   --threads N       images processed in parallel, one detector per thread (default 1);
@@ -51,21 +57,24 @@ examples:
   fieldlines detect frame.png
   fieldlines detect --json out/lines.json --draw out/overlays ../shared/data/elsed-ssl/images
   fieldlines detect --threads 2 --quiet --json lines.json a.png b.jpg more_frames/
+  fieldlines detect --thresholds trained.json --csv segments.csv frames/
 )";
 
 struct Options {
   bool help = false;
-  std::optional<fs::path> json, draw;
+  std::optional<fs::path> thresholds, json, csv, draw;
   int threads = 1;
   bool quiet = false;
   std::vector<std::string> paths;
 };
 
 Options parse(const Args& args) {
-  const ParsedArgs a(args, {"--json", "--draw", "--threads"}, {"--quiet", "--help", "-h"});
+  const ParsedArgs a(args, {"--thresholds", "--json", "--csv", "--draw", "--threads"}, {"--quiet", "--help", "-h"});
   Options o;
   o.help = a.flag("--help") || a.flag("-h");
+  if (const auto v = a.value("--thresholds")) o.thresholds = *v;
   if (const auto v = a.value("--json")) o.json = *v;
+  if (const auto v = a.value("--csv")) o.csv = *v;
   if (const auto v = a.value("--draw")) o.draw = *v;
   o.threads = a.int_or("--threads", 1, 1, 256);
   o.quiet = a.flag("--quiet");
@@ -123,6 +132,7 @@ int cmd_detect(const Args& args) {
   if (opt.paths.empty()) throw Error("no PATH given: name at least one image or folder (see --help)");
   // Output locations are checked before a possibly long batch, not after it.
   if (opt.json) check_output_path("--json", *opt.json);
+  if (opt.csv) check_output_path("--csv", *opt.csv);
   if (opt.draw) {
     std::error_code ec;
     fs::create_directories(*opt.draw, ec);
@@ -130,8 +140,8 @@ int cmd_detect(const Args& args) {
       throw Error("--draw " + opt.draw->string() + ": cannot create the folder" + (ec ? " (" + ec.message() + ")" : ""));
   }
 
-  const DetectorParams params;
-  const Thresholds thresholds;
+  ThresholdsFile config;  // defaults: the reference's parameters and thresholds
+  if (opt.thresholds) config = load_thresholds_file(*opt.thresholds);
   ImageInputs inputs = expand_image_inputs(opt.paths);
   const std::vector<fs::path>& images = inputs.images;
   const auto overlays = opt.draw ? overlay_paths(images, *opt.draw) : std::vector<fs::path>{};
@@ -143,7 +153,7 @@ int cmd_detect(const Args& args) {
 
   const int workers = std::max(1, std::min<int>(opt.threads, static_cast<int>(images.size())));
   std::vector<LineDetector> detectors;
-  for (int w = 0; w < workers; ++w) detectors.emplace_back(params, thresholds);
+  for (int w = 0; w < workers; ++w) detectors.emplace_back(config.detector, config.thresholds);
 
   std::vector<ItemResult> results(images.size());
   run_parallel_batch(images.size(), workers, [&](std::size_t i, int worker) {
@@ -188,12 +198,19 @@ int cmd_detect(const Args& args) {
     }
   }
   if (opt.json) write_output_file(*opt.json, detections_json(done, failed).dump() + "\n");
+  if (opt.csv) {
+    std::vector<ReferenceRow> rows;
+    for (const auto& d : done)
+      for (const Segment& s : d.segments) rows.push_back({d.path.filename().string(), s});
+    write_reference_csv(*opt.csv, rows);
+  }
 
   if (!opt.quiet) {
     std::printf("%zu segments in %zu image%s", total_segments, done.size(), done.size() == 1 ? "" : "s");
     if (!failed.empty()) std::printf(", %zu failed", failed.size());
     std::printf("\n");
     if (opt.json) std::printf("segments written to %s\n", opt.json->string().c_str());
+    if (opt.csv) std::printf("reference CSV written to %s\n", opt.csv->string().c_str());
     if (opt.draw) std::printf("overlays written to %s\n", opt.draw->string().c_str());
   }
   if (!failed.empty())
