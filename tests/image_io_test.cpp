@@ -118,6 +118,13 @@ TEST_F(ImageIo, CorruptAndNonImageFilesAreErrorsNotCrashes) {
   // A real PNG cut after its header: the header is fine, the pixel data is missing.
   const std::string png = read_all(write_image("whole.png", field(200, 150)));
   expect_load_error(write_bytes("cut.png", png.substr(0, 60)), "not a decodable image");
+  // A JPEG cut in half: libjpeg would fill the rest with grey and call it a success.
+  const std::string jpg = read_all(write_image("whole.jpg", field(200, 150)));
+  EXPECT_EQ(fieldlines::load_image(write_bytes("copy.jpg", jpg)).size(), cv::Size(200, 150));
+  expect_load_error(write_bytes("half.jpg", jpg.substr(0, jpg.size() / 2)), "truncated JPEG");
+  expect_load_error(write_bytes("headers.jpg", jpg.substr(0, 100)), "truncated JPEG");
+  // Bytes appended after a complete JPEG (as some cameras do) are fine.
+  EXPECT_NO_THROW((void)fieldlines::load_image(write_bytes("trailer.jpg", jpg + std::string(3000, '\x11'))));
   // A PNG whose pixel data is overwritten with garbage.
   std::string broken = png;
   for (std::size_t i = 100; i < broken.size(); i += 7) broken[i] = static_cast<char>(broken[i] ^ 0x5c);

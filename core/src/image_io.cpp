@@ -74,6 +74,36 @@ std::optional<cv::Size> probe_jpeg(Bytes b) {
   return std::nullopt;
 }
 
+// libjpeg decodes a truncated JPEG "successfully", filling the missing rows with grey, which
+// would silently give the detector a false edge. Entropy-coded data never holds FF D9, so a
+// complete file has the end-of-image marker after its first start-of-scan (an EXIF thumbnail's
+// own FF D9 comes before it; data some cameras append after the image comes after it).
+bool jpeg_is_truncated(Bytes b) {
+  if (b.size() < 4 || b[0] != 0xFF || b[1] != 0xD8) return false;
+  std::size_t i = 2;
+  while (i + 3 < b.size()) {
+    if (b[i] != 0xFF) return false;  // not a marker: leave the verdict to the decoder
+    const unsigned marker = b[i + 1];
+    if (marker == 0xFF) {
+      ++i;
+      continue;
+    }
+    if (marker == 0xD8 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) {
+      i += 2;
+      continue;
+    }
+    const std::size_t length = big_endian(b, i + 2, 2);
+    if (marker == 0xDA) {
+      for (std::size_t k = i + 2 + length; k + 1 < b.size(); ++k)
+        if (b[k] == 0xFF && b[k + 1] == 0xD9) return false;
+      return true;
+    }
+    if (length < 2) return false;
+    i += 2 + length;
+  }
+  return true;  // ended before any image data
+}
+
 std::optional<cv::Size> probe_bmp(Bytes b) {
   if (b.size() < 26 || b[0] != 'B' || b[1] != 'M') return std::nullopt;
   const std::uint32_t header = little_endian(b, 14, 4);
@@ -175,6 +205,8 @@ cv::Mat load_image(const fs::path& path, const ImageLoadParams& params) {
     if (header->width == 0 || header->height == 0) fail(path, "image header says it is empty (0 pixels)");
     check_pixels(*header);
   }
+
+  if (jpeg_is_truncated(bytes)) fail(path, "truncated JPEG (no end-of-image marker after the image data)");
 
   cv::Mat image;
   try {
