@@ -98,8 +98,12 @@ TEST_F(ImageIo, KeepsGreyAlphaAnd16BitAndTheDetectorAcceptsThem) {
 
 TEST_F(ImageIo, TinyImagesLoadAndGiveNoSegments) {
   fieldlines::LineDetector detector;
-  for (const cv::Size size : {cv::Size(1, 1), cv::Size(2, 2), cv::Size(2, 50), cv::Size(50, 2)}) {
-    const cv::Mat loaded = fieldlines::load_image(write_image("tiny.png", cv::Mat(size, CV_8UC3, cv::Scalar(1, 2, 3))));
+  // Below the 3x3 gradient window, then below the 7x7 smoothing kernel (with a white stripe).
+  for (const cv::Size size : {cv::Size(1, 1), cv::Size(2, 2), cv::Size(2, 50), cv::Size(50, 2), cv::Size(3, 3),
+                              cv::Size(5, 5), cv::Size(6, 200)}) {
+    cv::Mat img(size, CV_8UC3, cv::Scalar(40, 140, 50));
+    img.col(size.width / 2).setTo(cv::Scalar(255, 255, 255));
+    const cv::Mat loaded = fieldlines::load_image(write_image("tiny.png", img));
     EXPECT_EQ(loaded.size(), size);
     EXPECT_TRUE(detector.detect(loaded).empty()) << size;
   }
