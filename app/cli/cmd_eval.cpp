@@ -1,9 +1,77 @@
+// `fieldlines eval`: precision/recall of a thresholds file on labelled data.
+#include <cstdio>
+
+#include "args.hpp"
 #include "commands.hpp"
+#include "fieldlines/atomic_file.hpp"
 #include "fieldlines/error.hpp"
+#include "fieldlines/metrics.hpp"
+#include "fieldlines/thresholds_file.hpp"
+#include "labelled_data.hpp"
+#include "training_report.hpp"
 
 namespace fieldlines::cli {
+namespace {
 
-// Placeholder until this command is implemented; it fails loudly rather than pretend.
-int cmd_eval(const Args&) { throw Error("'eval' is not implemented yet"); }
+constexpr const char* kHelp = R"(usage: fieldlines eval DATA... --thresholds FILE [options]
+
+Classifies every labelled segment of DATA (a labelling project file or a reference annotation
+CSV) with the thresholds FILE and prints TP, FP, FN, precision, recall and F1 per class, per
+DATA file and pooled. Unlabelled segments are ignored.
+
+options:
+  --thresholds FILE  thresholds file written by `fieldlines train` (required)
+  --per-image        also one line per image
+  --json OUT         write the counts as JSON: {"files": [{"file", "total", "images": [...]}],
+                     "total": {...}}
+  --gt ...           evaluate detections against synthetic ground truth instead (see
+                     `fieldlines eval --gt --help`)
+  -h, --help         this help
+Exit codes: 0 ok, 2 usage or fatal error (a malformed DATA row names its file and line).
+)";
+
+bool wants_ground_truth(const Args& args) {
+  for (const std::string& a : args)
+    if (a == "--gt" || a.rfind("--gt=", 0) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
+int cmd_eval(const Args& args) {
+  if (wants_ground_truth(args)) {
+    if (&cmd_eval_gt == nullptr) throw Error("--gt: ground-truth evaluation is not built into this fieldlines");
+    return cmd_eval_gt(args);
+  }
+  const ParsedArgs a(args, {"--thresholds", "--json"}, {"--per-image", "-h", "--help"});
+  if (a.flag("-h") || a.flag("--help")) {
+    std::printf("%s", kHelp);
+    return 0;
+  }
+  const auto thresholds_path = a.value("--thresholds");
+  if (!thresholds_path) throw Error("missing --thresholds FILE (see --help)");
+  if (a.positionals().empty()) throw Error("no DATA given (see --help)");
+  const ThresholdsFile file = load_thresholds_file(*thresholds_path);
+
+  nlohmann::json out = {{"thresholds", *thresholds_path}, {"files", nlohmann::json::array()}};
+  Counts total;
+  print_counts_header(stdout, 20);
+  for (const std::string& path : a.positionals()) {
+    const LoadedData d = load_labelled_data(path);
+    const Evaluation ev = evaluate(d.set, file.thresholds);
+    nlohmann::json images = nlohmann::json::array();
+    for (const ImageCounts& ic : ev.per_image) {
+      if (a.flag("--per-image")) print_counts(stdout, "  " + ic.image, ic.counts);
+      images.push_back({{"image", ic.image}, {"counts", counts_json(ic.counts)}});
+    }
+    print_counts(stdout, path, ev.total);
+    out["files"].push_back({{"file", path}, {"total", counts_json(ev.total)}, {"images", std::move(images)}});
+    total += ev.total;
+  }
+  if (a.positionals().size() > 1) print_counts(stdout, "all", total);
+  out["total"] = counts_json(total);
+  if (const auto json_path = a.value("--json")) write_file_atomically(*json_path, out.dump(2) + "\n");
+  return 0;
+}
 
 }  // namespace fieldlines::cli

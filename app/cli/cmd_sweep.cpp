@@ -1,9 +1,100 @@
+// `fieldlines sweep`: precision and recall against training-set size, in the layout of the
+// paper's Table 3 (one row per fraction, a precision/recall pair per DATA file).
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "args.hpp"
 #include "commands.hpp"
+#include "fieldlines/atomic_file.hpp"
 #include "fieldlines/error.hpp"
+#include "fieldlines/sweep.hpp"
+#include "labelled_data.hpp"
+#include "progress.hpp"
+#include "training_options.hpp"
 
 namespace fieldlines::cli {
+namespace {
 
-// Placeholder until this command is implemented; it fails loudly rather than pretend.
-int cmd_sweep(const Args&) { throw Error("'sweep' is not implemented yet"); }
+constexpr const char* kHelp = R"(usage: fieldlines sweep DATA... [options]
+
+For each training fraction and seed 1..N: split each DATA file (a labelling project or a
+reference CSV) into train and test, train, and measure the test precision and recall of the
+trained class. Prints the median over seeds per fraction and file (the paper's Table 3).
+
+options:
+  --fractions LIST  comma-separated training fractions in (0, 1) (default 0.1,0.2,...,0.7)
+  --seeds N         seeds per fraction (default 10)
+  --split S         row (default, the paper's) or image
+  --json OUT        write [{"file", "fraction", "precision", "recall"}] (medians) to OUT
+  --quiet           no progress on stderr
+)";
+
+std::vector<double> parse_fractions(const std::string& text) {
+  std::vector<double> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) out.push_back(parse_double(item, "--fractions", 1e-9, 1 - 1e-9));
+  if (out.empty()) throw Error("--fractions: expected a comma-separated list");
+  return out;
+}
+
+}  // namespace
+
+int cmd_sweep(const Args& args) {
+  std::set<std::string> values = training_value_options();
+  values.insert({"--fractions", "--seeds", "--split", "--json"});
+  const ParsedArgs a(args, values, {"-h", "--help", "--quiet"});
+  if (a.flag("-h") || a.flag("--help")) {
+    std::printf("%s%s", kHelp, kTrainingOptionsHelp);
+    return 0;
+  }
+  if (a.positionals().empty()) throw Error("no DATA given (see --help)");
+  SweepParams sp;
+  if (const auto v = a.value("--fractions")) sp.fractions = parse_fractions(*v);
+  sp.seeds = a.int_or("--seeds", 10, 1, 100000);
+  sp.split = SplitMode::ByRow;
+  if (const auto v = a.value("--split"); v && !parse_split_mode(*v, sp.split))
+    throw Error("--split: expected image or row, got '" + *v + "'");
+
+  std::vector<LoadedData> data;
+  for (const std::string& p : a.positionals()) data.push_back(load_labelled_data(p));
+  std::vector<std::vector<SweepCell>> results;
+  {
+    Progress progress("sweep", data.size() * sp.fractions.size() * static_cast<std::size_t>(sp.seeds), stderr,
+                      {a.flag("--quiet") ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
+    for (const LoadedData& d : data) {
+      SweepParams p = sp;
+      p.start = d.thresholds.value_or(Thresholds{});
+      p.train = apply_training_options(a, p.start).train;
+      results.push_back(run_sweep(d.set, p, [&](int, int) { progress.advance(); }));
+    }
+  }
+
+  // Table: one column pair per file, named by the file's stem.
+  std::printf("%-9s", "set size");
+  for (const LoadedData& d : data)
+    std::printf(" | %-20.20s", std::filesystem::path(d.path).stem().string().c_str());
+  std::printf("\n%-9s", "");
+  for (std::size_t i = 0; i < data.size(); ++i) std::printf(" | %-9s %-10s", "precision", "recall");
+  std::printf("\n");
+  nlohmann::json json = nlohmann::json::array();
+  for (std::size_t f = 0; f < sp.fractions.size(); ++f) {
+    std::printf("%7.0f%% ", 100 * sp.fractions[f]);
+    for (std::size_t i = 0; i < data.size(); ++i) {
+      const SweepCell& c = results[i][f];
+      std::printf(" | %9.2f %-10.2f", c.median_precision, c.median_recall);
+      json.push_back({{"file", data[i].path},
+                      {"fraction", c.fraction},
+                      {"precision", c.median_precision},
+                      {"recall", c.median_recall}});
+    }
+    std::printf("\n");
+  }
+  if (const auto out = a.value("--json")) write_file_atomically(*out, json.dump(2) + "\n");
+  return 0;
+}
 
 }  // namespace fieldlines::cli

@@ -1,9 +1,145 @@
+// `fieldlines train`: PSO-train the classification thresholds on labelled data and write the
+// thresholds file the robot loads.
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+
+#include "args.hpp"
 #include "commands.hpp"
 #include "fieldlines/error.hpp"
+#include "fieldlines/splits.hpp"
+#include "fieldlines/thresholds_file.hpp"
+#include "fieldlines/training.hpp"
+#include "labelled_data.hpp"
+#include "progress.hpp"
+#include "training_options.hpp"
+#include "training_report.hpp"
 
 namespace fieldlines::cli {
+namespace {
 
-// Placeholder until this command is implemented; it fails loudly rather than pretend.
-int cmd_train(const Args&) { throw Error("'train' is not implemented yet"); }
+constexpr const char* kHelp = R"(usage: fieldlines train DATA... -o FILE [options]
+
+Trains the classification thresholds on labelled segments and writes the thresholds file
+(schema: docs/training.md). DATA is a labelling project file or a reference annotation CSV;
+several are pooled. The data is split into train and test parts; the file's provenance records
+both parts' precision and recall. Progress on stderr, a summary on stdout.
+
+options:
+  -o, --output FILE    the thresholds file to write (required)
+  --split S            image (default: no image on both sides) or row (the paper's)
+  --train-fraction F   share of images/rows used for training, (0, 1] (default 0.7;
+                       1 trains on everything and leaves no test part)
+  --seed S             seed of the split and of PSO (default 1)
+)";
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+nlohmann::json bounds_json(const ThresholdBounds& b) {
+  return {{"min_projection", {b.projection.lo, b.projection.hi}},
+          {"max_angle_deg", {b.angle_deg.lo, b.angle_deg.hi}},
+          {"min_length", {b.length.lo, b.length.hi}}};
+}
+
+}  // namespace
+
+int cmd_train(const Args& args) {
+  std::set<std::string> values = training_value_options();
+  values.insert({"-o", "--output", "--split", "--train-fraction", "--seed"});
+  const ParsedArgs a(args, values, {"-h", "--help", "--quiet"});
+  if (a.flag("-h") || a.flag("--help")) {
+    std::printf("%s%s  --quiet           no progress on stderr\n", kHelp, kTrainingOptionsHelp);
+    return 0;
+  }
+  const auto output = a.has("-o") ? a.value("-o") : a.value("--output");
+  if (!output) throw Error("missing -o FILE (see --help)");
+  if (a.positionals().empty()) throw Error("no DATA given (see --help)");
+
+  std::vector<LoadedData> data;
+  for (const std::string& p : a.positionals()) data.push_back(load_labelled_data(p));
+  const LabelledSet all = merge(data);
+  if (all.size() == 0) throw Error("the DATA files hold no labelled segments");
+
+  Thresholds start = data[0].thresholds.value_or(Thresholds{});
+  const DetectorParams detector = data[0].detector.value_or(DetectorParams{});
+  ProtocolSpec spec = apply_training_options(a, start);
+  if (const auto v = a.value("--split"); v && !parse_split_mode(*v, spec.split))
+    throw Error("--split: expected image or row, got '" + *v + "'");
+  const double fraction = a.double_or("--train-fraction", 0.7, 1e-9, 1.0);
+  const int seed = a.int_or("--seed", 1, 0, 2147483647);
+  spec.train.pso.seed = static_cast<std::uint64_t>(seed);
+
+  const Split split = split_train_test(all, spec.split, fraction, static_cast<std::uint64_t>(seed));
+  const LabelledSet train_set = all.subset(split.train), test_set = all.subset(split.test);
+  std::fprintf(stderr, "training %s on %zu segments (%zu images), testing on %zu segments\n",
+               std::string(to_string(spec.train.target)).c_str(), train_set.size(), train_set.images.size(),
+               test_set.size());
+
+  const auto t0 = std::chrono::steady_clock::now();
+  TrainResult r;
+  {
+    Progress progress("PSO", static_cast<std::size_t>(spec.train.pso.iterations), stderr,
+                      {a.flag("--quiet") ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
+    r = train(train_set.segments, start, spec.train, [&](const TrainingProgress&) { progress.advance(); });
+  }
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+  const Counts train_counts = evaluate(train_set, r.thresholds).total;
+  const std::optional<Counts> test_counts =
+      test_set.size() ? std::optional<Counts>(evaluate(test_set, r.thresholds).total) : std::nullopt;
+
+  ThresholdsFile file;
+  file.detector = detector;
+  file.thresholds = r.thresholds;
+  nlohmann::json& p = file.provenance;
+  p["data"] = nlohmann::json::array();
+  for (const LoadedData& d : data) p["data"].push_back(d.path);
+  p["counts"] = {{"segments", all.size()},
+                 {"images", all.images.size()},
+                 {"marking", all.count(Label::Marking)},
+                 {"boundary", all.count(Label::Boundary)},
+                 {"none", all.count(Label::None)},
+                 {"train_segments", train_set.size()},
+                 {"test_segments", test_set.size()}};
+  p["class"] = to_string(spec.train.target);
+  p["objective"] = spec.train.objective.name();
+  p["seed"] = seed;
+  p["split"] = to_string(spec.split);
+  p["train_fraction"] = fraction;
+  p["pso"] = {{"particles", spec.train.pso.particles},
+              {"iterations", spec.train.pso.iterations},
+              {"inertia", spec.train.pso.inertia},
+              {"cognitive", spec.train.pso.cognitive},
+              {"social", spec.train.pso.social},
+              {"polish", spec.train.polish}};
+  p["bounds"] = {{"marking", bounds_json(spec.train.marking_bounds)},
+                 {"boundary", bounds_json(spec.train.boundary_bounds)}};
+  p["score"] = r.score;
+  p["date"] = utc_now();
+  p["fieldlines_version"] = FIELDLINES_VERSION;
+  p["train"] = counts_json(train_counts);
+  p["test"] = test_counts ? counts_json(*test_counts) : nlohmann::json(nullptr);
+  save_thresholds_file(*output, file);
+
+  const auto show = [](const char* name, const ColourClass& c) {
+    std::printf("%-9s min projection %8.3f  max angle %7.3f deg  min length %8.3f\n", name,
+                c.thresholds.min_projection, c.thresholds.max_angle_deg, c.thresholds.min_length);
+  };
+  show("boundary", r.thresholds.boundary);
+  show("marking", r.thresholds.marking);
+  std::printf("train %s = %g (PSO %g) in %.1f ms\n", spec.train.objective.name().c_str(), r.score, r.pso_score, ms);
+  print_counts_header(stdout, 20);
+  print_counts(stdout, "train", train_counts);
+  if (test_counts) print_counts(stdout, "test", *test_counts);
+  std::printf("wrote %s\n", output->c_str());
+  return 0;
+}
 
 }  // namespace fieldlines::cli

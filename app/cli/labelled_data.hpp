@@ -1,0 +1,28 @@
+#pragma once
+// Loading the DATA arguments of train/eval/sweep: each is a project file or a reference CSV.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fieldlines/classifier.hpp"
+#include "fieldlines/detector.hpp"
+#include "fieldlines/labelled_set.hpp"
+
+namespace fieldlines::cli {
+
+struct LoadedData {
+  std::string path;
+  LabelledSet set;                        // image names as in the file
+  std::optional<DetectorParams> detector; // from a project file
+  std::optional<Thresholds> thresholds;   // from a project file
+  std::size_t unlabelled = 0;             // segments skipped for having no label
+};
+
+// Throws fieldlines::Error naming the file on any problem (malformed rows included).
+LoadedData load_labelled_data(const std::string& path);
+
+// Several files as one set; image names are prefixed with "<file>:" when there is more than
+// one file, so equal names in different files stay different images.
+LabelledSet merge(const std::vector<LoadedData>& data);
+
+}  // namespace fieldlines::cli
