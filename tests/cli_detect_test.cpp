@@ -206,8 +206,9 @@ TEST_F(CliDetect, UnusualImagesGetAResultOrAClearMessage) {
     else EXPECT_FALSE(img["segments"].empty()) << name;
     // Grey has no colour: with the default thresholds no grey gradient is within the classes'
     // angles (>= 35 degrees from green-white, >= 54 from black-green), so all are "none".
-    if (name == "grey.png")
+    if (name == "grey.png") {
       for (const auto& s : img["segments"]) EXPECT_EQ(s["label"], "none");
+    }
     // Every processed image, whatever its type, gets an 8-bit colour overlay of its size.
     const cv::Mat overlay = cv::imread((dir_ / "overlays" / name).string(), cv::IMREAD_UNCHANGED);
     ASSERT_FALSE(overlay.empty()) << name;
