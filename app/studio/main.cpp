@@ -1,0 +1,213 @@
+// fieldlines-studio: window, main loop and command line. All state lives in StudioController
+// (app/studio/logic); all drawing in fieldlines::gui.
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "bench_scene.hpp"
+#include "fieldlines/atomic_file.hpp"
+#include "fieldlines/error.hpp"
+#include "frame_stats.hpp"
+#include "open_project.hpp"
+#include "recent_projects.hpp"
+#include "studio_args.hpp"
+#include "studio_controller.hpp"
+#include "studio_ui.hpp"
+
+namespace {
+
+using namespace fieldlines;
+
+// Key presses collected by the GLFW callback between two frames (the UI thread only).
+std::vector<gui::KeyPress>* g_key_sink = nullptr;
+
+void on_key(GLFWwindow* /*window*/, int key, int /*scancode*/, int action, int mods) {
+  if (g_key_sink && (action == GLFW_PRESS || action == GLFW_REPEAT)) {
+    g_key_sink->push_back({key, mods, action == GLFW_REPEAT});
+  }
+}
+
+void on_glfw_error(int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); }
+
+// GLFW + ImGui lifetime (RAII so every exit path tears down in order).
+class Window {
+ public:
+  Window(int width, int height, bool vsync) {
+    glfwSetErrorCallback(on_glfw_error);
+    if (!glfwInit()) throw Error("cannot initialise GLFW (is a display available? try xvfb-run)");
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    window_ = glfwCreateWindow(width, height, "fieldlines studio", nullptr, nullptr);
+    if (!window_) {
+      glfwTerminate();
+      throw Error("cannot create a 1280x800-class OpenGL 3.3 window");
+    }
+    glfwSetWindowPos(window_, 0, 0);  // a known place on screen (tests drive it with xdotool)
+    glfwMakeContextCurrent(window_);
+    glfwSwapInterval(vsync ? 1 : 0);
+    glfwSetKeyCallback(window_, on_key);  // installed first: the ImGui backend chains to it
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // layout is fixed; never write imgui.ini into the cwd
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window_, true);
+    ImGui_ImplOpenGL3_Init("#version 330");
+  }
+  ~Window() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+  }
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+  GLFWwindow* get() const { return window_; }
+
+ private:
+  GLFWwindow* window_ = nullptr;
+};
+
+// Writes the state an automated test needs to drive the window (where the image is on screen,
+// what is hovered, how many saves happened) whenever it changes. Atomic, so a reader never sees
+// half a file.
+class StateWriter {
+ public:
+  explicit StateWriter(std::string path) : path_(std::move(path)) {}
+  void update(const studio::StudioController& c, const gui::UiState& ui) {
+    if (path_.empty()) return;
+    const auto& view = ui.image_view.view;
+    const nlohmann::json state{{"scale", view.scale()},
+                               {"offset", {view.offset().x, view.offset().y}},
+                               {"image", c.current()},
+                               {"hovered", c.hovered() ? static_cast<long>(*c.hovered()) : -1L},
+                               {"save_count", c.save_count()},
+                               {"panel", gui::panel_name(ui.shown_panel)},
+                               {"training", c.training().running()},
+                               {"trained", c.training().outcome().has_value()}};
+    std::string text = state.dump();
+    if (text == last_) return;
+    write_file_atomically(path_, text + "\n");
+    last_ = std::move(text);
+  }
+
+ private:
+  std::string path_;
+  std::string last_;
+};
+
+int run(const studio::StudioArgs& args) {
+  const bool bench = args.bench_frames > 0;
+  const auto recent_file = studio::default_recent_file();
+  std::vector<std::string> recent = bench ? std::vector<std::string>{} : studio::load_recent(recent_file);
+
+  Project project;
+  std::filesystem::path project_file;
+  bool needs_detection = false;
+  studio::ControllerOptions options;
+  if (bench && args.input.empty()) {
+    const auto folder = std::filesystem::temp_directory_path() / ("fieldlines-bench-" + std::to_string(::getpid()));
+    project = studio::write_bench_scene(folder);
+    project_file = folder / "bench-project.json";
+    options.autosave = false;
+  } else {
+    std::string input = args.input;
+    if (input.empty()) {
+      if (recent.empty()) throw Error(std::string("no project given and none opened before\n") + studio::studio_usage());
+      input = recent.front();
+    }
+    auto opened = studio::open_project(input);
+    project = std::move(opened.project);
+    project_file = opened.file;
+    needs_detection = opened.needs_detection;
+    if (!bench) {
+      studio::remember(recent, std::filesystem::absolute(project_file).string());
+      studio::save_recent(recent_file, recent);
+    }
+  }
+  if (bench) options.autosave = false;
+
+  Window window(args.window_width, args.window_height, !bench);
+  studio::StudioController controller(std::move(project), project_file, options);
+  if (needs_detection) controller.detect_all(true);
+  studio::FrameStats frame_stats(bench ? static_cast<std::size_t>(args.bench_frames) : 240);
+  gui::UiState ui;
+  ui.frame_stats = &frame_stats;
+  ui.recent_projects = recent;
+  std::vector<gui::KeyPress> keys;
+  g_key_sink = &keys;
+
+  StateWriter state_writer(args.state_file);
+  double last = glfwGetTime();  // end of the previous frame
+  int frames = 0;
+  int busy_frames = 0;  // keep rendering a few frames after any input so ImGui settles
+  while (!glfwWindowShouldClose(window.get()) && !ui.quit_requested) {
+    const bool working = controller.training().running() || controller.detection().running();
+    if (bench || working || busy_frames > 0) {
+      glfwPollEvents();
+    } else {
+      glfwWaitEventsTimeout(0.1);  // idle: no need to spin the CPU
+    }
+    // Frame time = the work of one frame (events to swap), not the idle wait before it.
+    const double frame_start = glfwGetTime();
+    busy_frames = std::max(0, busy_frames - 1);
+    if (!keys.empty() || ImGui::GetIO().MouseDelta.x != 0 || ImGui::GetIO().MouseDelta.y != 0) busy_frames = 4;
+    for (bool down : ImGui::GetIO().MouseDown) busy_frames = down ? 4 : busy_frames;
+
+    controller.poll(glfwGetTime());
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    gui::draw_studio(controller, ui, keys);
+    keys.clear();
+    ImGui::Render();
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window.get(), &width, &height);
+    glViewport(0, 0, width, height);
+    glClearColor(0.1f, 0.1f, 0.11f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    glfwSwapBuffers(window.get());
+    state_writer.update(controller, ui);
+
+    frame_stats.add(glfwGetTime() - (bench ? last : frame_start));
+    last = glfwGetTime();  // bench: frame-to-frame, so nothing between frames goes unmeasured
+    ++frames;
+    if (bench && frames >= args.bench_frames) break;
+  }
+  g_key_sink = nullptr;
+  controller.flush();  // threshold edits of the last half second
+  if (bench) {
+    std::printf("bench: %d frames at %dx%d, %zu segments, median frame time %.3f ms\n", frames, args.window_width,
+                args.window_height, controller.segments().size(), frame_stats.median_ms());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const auto args = fieldlines::studio::parse_studio_args(std::vector<std::string>(argv + 1, argv + argc));
+    if (args.help) {
+      std::fputs(fieldlines::studio::studio_usage(), stdout);
+      return 0;
+    }
+    return run(args);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "fieldlines-studio: %s\n", e.what());
+    return 2;
+  }
+}

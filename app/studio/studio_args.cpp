@@ -1,0 +1,64 @@
+#include "studio_args.hpp"
+
+#include <charconv>
+
+#include "fieldlines/error.hpp"
+
+namespace fieldlines::studio {
+
+namespace {
+int parse_int(const std::string& text, const std::string& option, int lo, int hi) {
+  int value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc{} || end != text.data() + text.size() || value < lo || value > hi) {
+    throw Error(option + ": expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got '" +
+                text + "'");
+  }
+  return value;
+}
+}  // namespace
+
+const char* studio_usage() {
+  return "usage: fieldlines-studio [PROJECT.json | IMAGE_FOLDER] [--window-size WxH] [--bench-frames N]\n"
+         "  PROJECT.json     a studio project (labels are autosaved into it)\n"
+         "  IMAGE_FOLDER     images to label; creates IMAGE_FOLDER/fieldlines-project.json\n"
+         "  (nothing)        reopens the most recent project\n"
+         "  --window-size    initial window size, default 1280x800\n"
+         "  --bench-frames N render N frames as fast as possible, print the median frame time, exit\n"
+         "                   (without a project: a 640x480 image with 300 segments)\n"
+         "  --state-file F   write the view transform, hovered segment and save count to F as JSON\n"
+         "                   whenever they change (for automated UI tests)\n";
+}
+
+StudioArgs parse_studio_args(const std::vector<std::string>& args) {
+  StudioArgs out;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    const auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw Error(a + ": missing value");
+      return args[++i];
+    };
+    if (a == "-h" || a == "--help") {
+      out.help = true;
+    } else if (a == "--bench-frames") {
+      out.bench_frames = parse_int(value(), a, 1, 1'000'000);
+    } else if (a == "--window-size") {
+      const std::string& v = value();
+      const auto x = v.find('x');
+      if (x == std::string::npos) throw Error(a + ": expected WIDTHxHEIGHT, got '" + v + "'");
+      out.window_width = parse_int(v.substr(0, x), a, 200, 16384);
+      out.window_height = parse_int(v.substr(x + 1), a, 200, 16384);
+    } else if (a == "--state-file") {
+      out.state_file = value();
+    } else if (!a.empty() && a[0] == '-') {
+      throw Error("unknown option " + a);
+    } else if (out.input.empty()) {
+      out.input = a;
+    } else {
+      throw Error("only one project or folder can be opened, got '" + out.input + "' and '" + a + "'");
+    }
+  }
+  return out;
+}
+
+}  // namespace fieldlines::studio

@@ -1,0 +1,21 @@
+#pragma once
+// Command line of fieldlines-studio.
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fieldlines::studio {
+
+struct StudioArgs {
+  std::string input;          // project file or image folder; empty: the most recent project
+  int window_width = 1280, window_height = 800;
+  int bench_frames = 0;       // > 0: render this many frames, print the median frame time, exit
+  std::string state_file;     // automation: write the UI state (view, hover, saves) here as JSON
+  bool help = false;
+};
+
+// Throws fieldlines::Error on an unknown option or a bad value.
+StudioArgs parse_studio_args(const std::vector<std::string>& args);
+const char* studio_usage();
+
+}  // namespace fieldlines::studio

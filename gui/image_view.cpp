@@ -1,0 +1,152 @@
+#include "image_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <imgui.h>
+
+#include "hit_test.hpp"
+
+namespace fieldlines::gui {
+
+namespace {
+using studio::Vec2;
+
+ImVec2 im(Vec2 v) { return {v.x, v.y}; }
+Vec2 vec(ImVec2 v) { return {v.x, v.y}; }
+ImU32 colour(studio::Rgba c) { return IM_COL32(c.r, c.g, c.b, c.a); }
+constexpr float kClickSlop = 4;  // pixels a press may move and still count as a click
+}  // namespace
+
+void draw_styled_line(ImDrawList* draw, ImVec2 a, ImVec2 b, const studio::SegmentStyle& style) {
+  const ImU32 col = colour(style.colour);
+  if (style.stroke == studio::Stroke::Solid) {
+    draw->AddLine(a, b, col, style.thickness);
+    return;
+  }
+  const float dx = b.x - a.x, dy = b.y - a.y;
+  const float length = std::hypot(dx, dy);
+  if (length < 1e-3f) return;
+  const float on = style.stroke == studio::Stroke::Dashed ? 8.0f : 2.0f;
+  const float period = style.stroke == studio::Stroke::Dashed ? 13.0f : 5.0f;
+  for (float t = 0; t < length; t += period) {
+    const float t1 = std::min(t + on, length);
+    draw->AddLine({a.x + dx * t / length, a.y + dy * t / length}, {a.x + dx * t1 / length, a.y + dy * t1 / length},
+                  col, style.thickness);
+  }
+}
+
+void segment_tooltip(const Segment& s, Label predicted, const SegmentFeatures& f) {
+  ImGui::Text("label: %s   predicted: %s", std::string(to_string(s.label)).c_str(),
+              std::string(to_string(predicted)).c_str());
+  ImGui::Text("(%.1f, %.1f) - (%.1f, %.1f)   saliency %.0f", s.x0, s.y0, s.x1, s.y1, s.saliency);
+  ImGui::Text("boundary: projection %.1f  angle %.1f deg", f.boundary.projection, f.boundary.angle_deg);
+  for (int k = 0; k < f.marking_count; ++k) {
+    ImGui::Text("marking%s: projection %.1f  angle %.1f deg", f.marking_count > 1 ? (k == 0 ? " (y)" : " (x)") : "",
+                f.marking[k].projection, f.marking[k].angle_deg);
+  }
+  ImGui::Text("grad y RGB (%.0f, %.0f, %.0f)  grad x RGB (%.0f, %.0f, %.0f)", s.grad_y[0], s.grad_y[1], s.grad_y[2],
+              s.grad_x[0], s.grad_x[1], s.grad_x[2]);
+}
+
+void draw_image_view(studio::StudioController& controller, ImageViewState& state, ImVec2 size) {
+  const cv::Mat& image = controller.image();
+  if (state.texture_generation != controller.image_generation()) {
+    const bool new_size = image.cols != state.texture.width() || image.rows != state.texture.height();
+    state.texture.upload(image);
+    state.fit_requested |= new_size;
+    state.texture_generation = controller.image_generation();
+  }
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  size.x = std::max(size.x, 50.0f);
+  size.y = std::max(size.y, 50.0f);
+  ImGui::InvisibleButton("##canvas", size,
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                             ImGuiButtonFlags_MouseButtonMiddle);
+  const bool hovered = ImGui::IsItemHovered();
+  const studio::Rect viewport{vec(origin), {origin.x + size.x, origin.y + size.y}};
+  const Vec2 image_size{static_cast<float>(image.cols), static_cast<float>(image.rows)};
+  if (state.fit_requested && image.cols > 0) {
+    state.view.fit(image_size, viewport);
+    state.fit_requested = false;
+  }
+
+  ImGuiIO& io = ImGui::GetIO();
+  const Vec2 mouse = vec(io.MousePos);
+  // Zoom at the cursor; pan with a right or middle drag.
+  if (hovered && io.MouseWheel != 0) state.view.zoom_at(mouse, std::pow(1.2f, io.MouseWheel));
+  if (ImGui::IsItemActive() && (ImGui::IsMouseDragging(ImGuiMouseButton_Right, kClickSlop) ||
+                                ImGui::IsMouseDragging(ImGuiMouseButton_Middle, kClickSlop))) {
+    state.view.pan(vec(io.MouseDelta));
+  }
+
+  const auto segments = controller.segments();
+  const auto predictions = controller.predictions();
+  // Hover: nearest segment in screen pixels (none while dragging a rectangle or panning).
+  if (hovered && !state.rect_active) {
+    controller.set_hovered(studio::nearest_segment(segments, state.view, mouse, state.pick_radius_px));
+  } else if (!ImGui::IsItemActive()) {
+    controller.set_hovered(std::nullopt);
+  }
+
+  // Left button: a click labels the hovered segment, a drag draws a selection rectangle.
+  if (ImGui::IsItemActivated() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    state.rect_start = mouse;
+    state.rect_active = false;
+  }
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, kClickSlop)) state.rect_active = true;
+  if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+    if (state.rect_active) {
+      const auto hit = studio::segments_in_rect(segments, state.view, {state.rect_start, mouse});
+      controller.label(hit, state.brush);
+    } else {
+      controller.label_hovered(state.brush);
+    }
+    state.rect_active = false;
+  }
+  if (hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Right) &&
+      ImGui::GetMouseDragDelta(ImGuiMouseButton_Right, 0).x == 0 &&
+      ImGui::GetMouseDragDelta(ImGuiMouseButton_Right, 0).y == 0) {
+    controller.label_hovered(Label::None);
+  }
+
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->PushClipRect(origin, {origin.x + size.x, origin.y + size.y}, true);
+  draw->AddRectFilled(origin, {origin.x + size.x, origin.y + size.y}, IM_COL32(25, 25, 28, 255));
+  if (!state.texture.empty()) {
+    draw->AddImage(state.texture.id(), im(state.view.image_to_screen({0, 0})),
+                   im(state.view.image_to_screen(image_size)));
+  } else {
+    const std::string msg = controller.image_error().empty() ? "no image" : controller.image_error();
+    draw->AddText({origin.x + 10, origin.y + 10}, IM_COL32(255, 120, 120, 255), msg.c_str());
+  }
+  if (state.show_segments) {
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const auto s = studio::to_screen(segments[i], state.view);
+      draw_styled_line(draw, im(s.a), im(s.b), studio::style_for(state.mode, segments[i].label, predictions[i]));
+    }
+  }
+  if (const auto h = controller.hovered()) {
+    // Highlight: a white halo under a redraw of the segment, thicker.
+    const auto s = studio::to_screen(segments[*h], state.view);
+    auto style = studio::style_for(state.mode, segments[*h].label, predictions[*h]);
+    draw->AddLine(im(s.a), im(s.b), IM_COL32(255, 255, 255, 230), style.thickness + 5);
+    style.thickness += 2;
+    style.stroke = studio::Stroke::Solid;
+    draw_styled_line(draw, im(s.a), im(s.b), style);
+  }
+  if (state.rect_active) {
+    draw->AddRectFilled(im(state.rect_start), im(mouse), IM_COL32(255, 255, 255, 40));
+    draw->AddRect(im(state.rect_start), im(mouse), IM_COL32(255, 255, 255, 200));
+  }
+  draw->PopClipRect();
+
+  if (const auto h = controller.hovered(); h && hovered && !state.rect_active) {
+    ImGui::BeginTooltip();
+    segment_tooltip(segments[*h], predictions[*h], controller.features(*h));
+    ImGui::EndTooltip();
+  }
+}
+
+}  // namespace fieldlines::gui

@@ -1,0 +1,37 @@
+#pragma once
+// The central canvas: the current image as a texture, the segments drawn over it, and the mouse
+// gestures that become controller commands (hover, click to label, drag a rectangle, pan, zoom).
+#include <cstddef>
+
+#include "gl_texture.hpp"
+#include "overlay_style.hpp"
+#include "studio_controller.hpp"
+#include "view_transform.hpp"
+
+namespace fieldlines::gui {
+
+struct ImageViewState {
+  studio::ViewTransform view;
+  studio::OverlayMode mode = studio::OverlayMode::Labels;
+  Label brush = Label::Marking;  // what a left click or rectangle assigns
+  float pick_radius_px = 8;      // hover reach, in screen pixels at every zoom
+  bool fit_requested = true;
+  bool show_segments = true;
+  GlTexture texture;
+  std::size_t texture_generation = static_cast<std::size_t>(-1);
+  bool rect_active = false;
+  studio::Vec2 rect_start{};
+};
+
+// Gesture map: left click = label hovered with the brush; right click = label hovered "none";
+// left drag = label everything the rectangle touches with the brush; right/middle drag = pan;
+// wheel = zoom at the cursor.
+void draw_image_view(studio::StudioController& controller, ImageViewState& state, ImVec2 size);
+
+// One segment with a stroke style (solid, dashed, dotted) in screen coordinates.
+void draw_styled_line(ImDrawList* draw, ImVec2 a, ImVec2 b, const studio::SegmentStyle& style);
+
+// Tooltip body for a segment: label, prediction and the per-class features.
+void segment_tooltip(const Segment& segment, Label predicted, const SegmentFeatures& features);
+
+}  // namespace fieldlines::gui

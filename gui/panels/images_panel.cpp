@@ -1,0 +1,47 @@
+// Images tab: every image with its labelling progress, filters, and navigation.
+#include <cstdio>
+#include <string>
+
+#include <imgui.h>
+
+#include "panels.hpp"
+
+namespace fieldlines::gui {
+
+void draw_images_panel(studio::StudioController& controller, UiState& ui) {
+  if (ImGui::Button("< Prev")) controller.previous_image();
+  ImGui::SameLine();
+  if (ImGui::Button("Next >")) controller.next_image();
+  ImGui::SameLine();
+  if (ImGui::Button("Next with errors (E)")) controller.next_image_with_errors();
+  ImGui::Combo("filter", &ui.image_filter, "all\0not fully labelled\0with errors\0test split\0");
+  ImGui::Text("%zu labelled segments in %zu images", controller.labelled_total(), controller.image_count());
+  if (!ui.recent_projects.empty() && ImGui::CollapsingHeader("Recent projects")) {
+    ImGui::TextDisabled("open one with: fieldlines-studio PATH");
+    for (const std::string& recent : ui.recent_projects) ImGui::BulletText("%s", recent.c_str());
+  }
+  ImGui::Separator();
+  ImGui::BeginChild("image list");
+  for (std::size_t i = 0; i < controller.image_count(); ++i) {
+    const studio::ImageProgress p = controller.progress(i);
+    const bool keep = ui.image_filter == 0 || (ui.image_filter == 1 && p.labelled < p.total) ||
+                      (ui.image_filter == 2 && p.errors > 0) || (ui.image_filter == 3 && controller.is_test_image(i));
+    if (!keep) continue;
+    ImGui::PushID(static_cast<int>(i));
+    const std::string& file = controller.project().images[i].path;
+    if (ImGui::Selectable(file.c_str(), i == controller.current(), 0, {200, 0})) controller.select_image(i);
+    ImGui::SameLine();
+    const float fraction = p.total ? static_cast<float>(p.labelled) / static_cast<float>(p.total) : 0.0f;
+    char overlay[48];
+    std::snprintf(overlay, sizeof overlay, "%zu/%zu%s", p.labelled, p.total, controller.is_test_image(i) ? " test" : "");
+    ImGui::ProgressBar(fraction, {110, 0}, overlay);
+    if (p.errors > 0) {
+      ImGui::SameLine();
+      ImGui::TextColored({1, 0.5f, 0.3f, 1}, "%ld err", p.errors);
+    }
+    ImGui::PopID();
+  }
+  ImGui::EndChild();
+}
+
+}  // namespace fieldlines::gui

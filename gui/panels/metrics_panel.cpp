@@ -1,0 +1,48 @@
+// Metrics tab: live precision/recall/F1 per class on both splits, detection and frame times.
+#include <imgui.h>
+
+#include "panels.hpp"
+
+namespace fieldlines::gui {
+
+namespace {
+void counts_table(const char* id, const Counts& train, const Counts& test) {
+  if (!ImGui::BeginTable(id, 5, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) return;
+  for (const char* h : {"class / split", "precision", "recall", "F1", "TP/FP/FN"}) ImGui::TableSetupColumn(h);
+  ImGui::TableHeadersRow();
+  const auto row = [](const char* name, const ClassCounts& c) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(name);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3f", c.precision());
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3f", c.recall());
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3f", c.f1());
+    ImGui::TableNextColumn();
+    ImGui::Text("%ld/%ld/%ld", c.tp, c.fp, c.fn);
+  };
+  row("marking train", train.marking);
+  row("marking test", test.marking);
+  row("boundary train", train.boundary);
+  row("boundary test", test.boundary);
+  ImGui::EndTable();
+}
+}  // namespace
+
+void draw_metrics_panel(studio::StudioController& controller, UiState& ui) {
+  ImGui::TextUnformatted("Current thresholds vs labels (test = every 5th image)");
+  counts_table("counts", controller.train_counts(), controller.test_counts());
+  ImGui::Separator();
+  ImGui::Text("detection: last image %.2f ms, mean %.2f ms", controller.last_detect_ms(), controller.mean_detect_ms());
+  if (ui.frame_stats) {
+    const auto history = ui.frame_stats->history_ms();
+    ImGui::Text("UI frame: median %.2f ms, last %.2f ms", ui.frame_stats->median_ms(), ui.frame_stats->last_ms());
+    if (!history.empty()) {
+      ImGui::PlotLines("##frames", history.data(), static_cast<int>(history.size()), 0, "frame ms", 0, 33, {-1, 80});
+    }
+  }
+}
+
+}  // namespace fieldlines::gui

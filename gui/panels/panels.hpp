@@ -1,0 +1,18 @@
+#pragma once
+// One function per tab of the studio's side bar; each draws state and calls the controller.
+#include "studio_controller.hpp"
+#include "studio_ui.hpp"
+
+namespace fieldlines::gui {
+
+void draw_images_panel(studio::StudioController& controller, UiState& ui);
+void draw_label_panel(studio::StudioController& controller, UiState& ui);
+void draw_thresholds_panel(studio::StudioController& controller, UiState& ui);
+void draw_train_panel(studio::StudioController& controller, UiState& ui);
+void draw_metrics_panel(studio::StudioController& controller, UiState& ui);
+void draw_export_panel(studio::StudioController& controller, UiState& ui);
+
+// The colour legend of the current overlay mode (also drawn on the Label panel).
+void draw_legend(studio::OverlayMode mode);
+
+}  // namespace fieldlines::gui

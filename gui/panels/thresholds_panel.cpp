@@ -1,0 +1,64 @@
+// Thresholds tab: hand-tune each class's thresholds (re-classifies at once from cached features)
+// and the detector's main parameters (used by the next background detection).
+#include <imgui.h>
+
+#include "panels.hpp"
+
+namespace fieldlines::gui {
+
+namespace {
+bool class_sliders(const char* name, ClassThresholds& t) {
+  bool changed = false;
+  ImGui::PushID(name);
+  ImGui::TextUnformatted(name);
+  changed |= ImGui::SliderFloat("min projection", &t.min_projection, 0, 255, "%.1f");
+  changed |= ImGui::SliderFloat("max angle (deg)", &t.max_angle_deg, 0, 90, "%.1f");
+  changed |= ImGui::SliderFloat("min length", &t.min_length, 0, 400, "%.0f");
+  ImGui::PopID();
+  return changed;
+}
+
+void counts_line(const char* name, const ClassCounts& c) {
+  ImGui::Text("%-9s P %.3f  R %.3f  F1 %.3f  (TP %ld FP %ld FN %ld)", name, c.precision(), c.recall(), c.f1(), c.tp,
+              c.fp, c.fn);
+}
+}  // namespace
+
+void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/) {
+  Thresholds t = controller.thresholds();
+  bool changed = class_sliders("marking (white <-> green)", t.marking.thresholds);
+  ImGui::Separator();
+  changed |= class_sliders("boundary (black -> green)", t.boundary.thresholds);
+  if (ImGui::Button("Reset to defaults")) {
+    t = Thresholds{};
+    changed = true;
+  }
+  if (changed) controller.set_thresholds(t);
+  ImGui::Separator();
+  ImGui::TextUnformatted("All labelled data (train split):");
+  counts_line("marking", controller.train_counts().marking);
+  counts_line("boundary", controller.train_counts().boundary);
+
+  ImGui::Separator();
+  ImGui::TextUnformatted("Detector (applies to the next detection)");
+  DetectorParams p = controller.detector_params();
+  ImGui::SliderInt("gradient threshold", &p.gradient_threshold, 1, 255);
+  ImGui::SliderInt("anchor threshold", &p.anchor_threshold, 0, 64);
+  ImGui::SliderInt("min line length", &p.min_line_length, 5, 200);
+  float sigma = static_cast<float>(p.gaussian_sigma);
+  if (ImGui::SliderFloat("gaussian sigma", &sigma, 0.1f, 5)) p.gaussian_sigma = sigma;
+  float validation = static_cast<float>(p.validation_threshold);
+  if (ImGui::SliderFloat("validation (rad)", &validation, 0.01f, 1)) p.validation_threshold = validation;
+  controller.set_detector_params(p);
+  studio::DetectionJob& job = controller.detection();
+  if (job.running()) {
+    ImGui::ProgressBar(job.progress(), {-1, 0});
+    if (ImGui::Button("Stop detection")) job.cancel();
+  } else {
+    if (ImGui::Button("Detect new images")) controller.detect_all(true);
+    ImGui::SameLine();
+    if (ImGui::Button("Re-detect all (drops labels)")) controller.detect_all(false);
+  }
+}
+
+}  // namespace fieldlines::gui

@@ -1,0 +1,124 @@
+#include "studio_ui.hpp"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include "panels/panels.hpp"
+
+namespace fieldlines::gui {
+
+const char* panel_name(Panel panel) {
+  switch (panel) {
+    case Panel::Images: return "Images";
+    case Panel::Label: return "Label";
+    case Panel::Thresholds: return "Thresholds";
+    case Panel::Train: return "Train";
+    case Panel::Metrics: return "Metrics";
+    case Panel::Export: return "Export";
+    case Panel::Count: break;
+  }
+  return "?";
+}
+
+void handle_shortcuts(studio::StudioController& controller, UiState& ui, std::span<const KeyPress> keys) {
+  if (ImGui::GetIO().WantTextInput) return;
+  for (const KeyPress& k : keys) {
+    const bool ctrl = (k.mods & GLFW_MOD_CONTROL) != 0, shift = (k.mods & GLFW_MOD_SHIFT) != 0;
+    if (k.repeat && k.key != GLFW_KEY_LEFT && k.key != GLFW_KEY_RIGHT) continue;  // only arrows auto-repeat
+    if (ctrl) {
+      if (k.key == GLFW_KEY_Z) shift ? controller.redo() : controller.undo();
+      if (k.key == GLFW_KEY_Y) controller.redo();
+      if (k.key == GLFW_KEY_Q) ui.quit_requested = true;
+      if (k.key == GLFW_KEY_T) {
+        controller.training().running() ? controller.cancel_training() : controller.start_training(ui.train_params);
+        ui.requested_panel = Panel::Train;
+        ui.panel_request_pending = true;
+      }
+      continue;
+    }
+    switch (k.key) {
+      case GLFW_KEY_M: controller.label_hovered(Label::Marking); break;
+      case GLFW_KEY_B: controller.label_hovered(Label::Boundary); break;
+      case GLFW_KEY_N: controller.label_hovered(Label::None); break;
+      case GLFW_KEY_C: controller.label_hovered(Label::Unlabelled); break;
+      case GLFW_KEY_RIGHT: controller.next_image(); break;
+      case GLFW_KEY_LEFT: controller.previous_image(); break;
+      case GLFW_KEY_E: controller.next_image_with_errors(); break;
+      case GLFW_KEY_F: ui.image_view.fit_requested = true; break;
+      default:
+        if (k.key >= GLFW_KEY_F1 && k.key < GLFW_KEY_F1 + static_cast<int>(Panel::Count)) {
+          ui.requested_panel = static_cast<Panel>(k.key - GLFW_KEY_F1);
+          ui.panel_request_pending = true;
+        }
+    }
+  }
+}
+
+namespace {
+
+void draw_status_bar(const studio::StudioController& controller, const UiState& ui) {
+  const auto segments = controller.segments();
+  std::size_t labelled = 0;
+  for (const Segment& s : segments) labelled += s.label != Label::Unlabelled;
+  ImGui::Text("image %zu/%zu  %s  |  %zu/%zu labelled  |  zoom %.0f%%  |  frame %.1f ms",
+              controller.image_count() ? controller.current() + 1 : 0, controller.image_count(),
+              controller.image_count() ? controller.project().images[controller.current()].path.c_str() : "-",
+              labelled, segments.size(), ui.image_view.view.scale() * 100,
+              ui.frame_stats ? ui.frame_stats->median_ms() : 0.0);
+  if (!controller.save_error().empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored({1, 0.4f, 0.4f, 1}, "  autosave failed: %s", controller.save_error().c_str());
+  } else if (controller.save_count() > 0) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("  saved");
+  }
+}
+
+}  // namespace
+
+void draw_studio(studio::StudioController& controller, UiState& ui, std::span<const KeyPress> keys) {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(viewport->WorkPos);
+  ImGui::SetNextWindowSize(viewport->WorkSize);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {6, 6});
+  ImGui::Begin("fieldlines studio", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                   ImGuiWindowFlags_NoSavedSettings);
+  ImGui::PopStyleVar(2);
+  handle_shortcuts(controller, ui, keys);
+
+  const float side_width = 400;
+  const float status_height = ImGui::GetFrameHeightWithSpacing();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  draw_image_view(controller, ui.image_view, {avail.x - side_width - 6, avail.y - status_height});
+  ImGui::SameLine();
+  ImGui::BeginChild("side", {side_width, avail.y - status_height});
+  if (ImGui::BeginTabBar("panels")) {
+    for (int p = 0; p < static_cast<int>(Panel::Count); ++p) {
+      const Panel panel = static_cast<Panel>(p);
+      const ImGuiTabItemFlags flags =
+          ui.panel_request_pending && ui.requested_panel == panel ? ImGuiTabItemFlags_SetSelected : 0;
+      if (ImGui::BeginTabItem(panel_name(panel), nullptr, flags)) {
+        ui.shown_panel = panel;
+        switch (panel) {
+          case Panel::Images: draw_images_panel(controller, ui); break;
+          case Panel::Label: draw_label_panel(controller, ui); break;
+          case Panel::Thresholds: draw_thresholds_panel(controller, ui); break;
+          case Panel::Train: draw_train_panel(controller, ui); break;
+          case Panel::Metrics: draw_metrics_panel(controller, ui); break;
+          case Panel::Export: draw_export_panel(controller, ui); break;
+          case Panel::Count: break;
+        }
+        ImGui::EndTabItem();
+      }
+    }
+    ui.panel_request_pending = false;
+    ImGui::EndTabBar();
+  }
+  ImGui::EndChild();
+  draw_status_bar(controller, ui);
+  ImGui::End();
+}
+
+}  // namespace fieldlines::gui

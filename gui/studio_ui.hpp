@@ -1,0 +1,50 @@
+#pragma once
+// The studio's whole window: the image canvas on the left, tabbed panels on the right, a status
+// bar, and the keyboard shortcuts. Draws controller state and forwards user actions to it.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fieldlines/training.hpp"
+#include "frame_stats.hpp"
+#include "image_view.hpp"
+#include "studio_controller.hpp"
+
+namespace fieldlines::gui {
+
+// A key press as GLFW reported it. Shortcuts are taken from these events rather than from ImGui's
+// key-down state, because a press and release arriving between two frames would otherwise be lost.
+struct KeyPress {
+  int key = 0;   // GLFW_KEY_*
+  int mods = 0;  // GLFW_MOD_* bits
+  bool repeat = false;
+};
+
+enum class Panel { Images, Label, Thresholds, Train, Metrics, Export, Count };
+const char* panel_name(Panel panel);
+
+struct UiState {
+  ImageViewState image_view;
+  Panel requested_panel = Panel::Label;  // selected on the next frame (F1..F6 or startup)
+  bool panel_request_pending = true;
+  Panel shown_panel = Panel::Label;
+  int image_filter = 0;  // 0 all, 1 not fully labelled, 2 with errors, 3 test split
+  TrainParams train_params;
+  int scatter_x = 0, scatter_y = 1;  // threshold dimensions of the particle scatter
+  std::string export_path = "thresholds.json";
+  std::string export_message;
+  std::string export_preview;
+  std::vector<std::string> recent_projects;
+  const studio::FrameStats* frame_stats = nullptr;
+  bool quit_requested = false;
+};
+
+// Draws one frame of the UI (between ImGui::NewFrame and ImGui::Render).
+void draw_studio(studio::StudioController& controller, UiState& ui, std::span<const KeyPress> keys = {});
+
+// Keyboard shortcuts (ignored while a text field has focus): M/B/N/C label the hovered segment
+// marking/boundary/none/clear, Left/Right previous/next image, E next image with errors, F fit,
+// Ctrl+Z undo, Ctrl+Shift+Z or Ctrl+Y redo, Ctrl+T start/stop training, F1..F6 panels, Ctrl+Q quit.
+void handle_shortcuts(studio::StudioController& controller, UiState& ui, std::span<const KeyPress> keys);
+
+}  // namespace fieldlines::gui

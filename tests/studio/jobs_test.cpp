@@ -1,0 +1,192 @@
+// Background jobs without a window: training start/progress/cancel/finish/apply and detection,
+// always handed over through poll() on the calling ("UI") thread.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "fieldlines/dataset.hpp"
+#include "fixtures.hpp"
+#include "message_queue.hpp"
+#include "studio_controller.hpp"
+#include "training_job.hpp"
+
+namespace fs = fieldlines::studio;
+using fieldlines::Label;
+using namespace std::chrono_literals;
+
+namespace {
+
+// A labelled session: every grid segment labelled with what the default thresholds predict,
+// except that odd images' markings are labelled "none" so training has something to fix.
+struct Labelled {
+  Labelled() : dir("jobs"), file(studio_test::write_project(dir.path(), 6, 12)) {
+    fieldlines::Project p = fieldlines::Project::load(file);
+    for (std::size_t img = 0; img < p.images.size(); ++img) {
+      auto& segs = p.images[img].segments;
+      for (std::size_t i = 0; i < segs.size(); ++i) {
+        segs[i].label = i % 2 ? Label::Boundary : Label::Marking;
+        segs[i].saliency = static_cast<float>(100 + 20 * i);  // lengths spread over 100..320
+      }
+    }
+    p.save(file);
+  }
+  studio_test::TempDir dir;
+  std::filesystem::path file;
+};
+
+fieldlines::TrainParams small_training(int iterations) {
+  fieldlines::TrainParams p;
+  p.target = fieldlines::TrainClass::Marking;
+  p.pso.particles = 12;
+  p.pso.iterations = iterations;
+  p.polish = false;
+  return p;
+}
+
+}  // namespace
+
+TEST(MessageQueue, DeliversEverythingFromManyThreadsOnce) {
+  fs::MessageQueue<int> q;
+  std::vector<std::thread> workers;
+  for (int t = 0; t < 4; ++t) {
+    workers.emplace_back([&q, t] {
+      for (int i = 0; i < 1000; ++i) q.push(t * 1000 + i);
+    });
+  }
+  std::vector<int> got;
+  while (got.size() < 4000) {
+    for (int v : q.drain()) got.push_back(v);
+  }
+  for (auto& w : workers) w.join();
+  EXPECT_TRUE(q.drain().empty());
+  std::sort(got.begin(), got.end());
+  for (int i = 0; i < 4000; ++i) ASSERT_EQ(got[static_cast<std::size_t>(i)], i);
+}
+
+TEST(TrainingJob, RunsToTheEndAndReportsEveryIteration) {
+  Labelled data;
+  fs::StudioController c(fieldlines::Project::load(data.file), data.file);
+  auto t = c.thresholds();
+  t.marking.thresholds.min_length = 300;  // misses most markings: training must lower it
+  c.set_thresholds(t);
+  const long missed = c.train_counts().marking.fn;
+  ASSERT_GT(missed, 0);
+
+  c.start_training(small_training(15));
+  EXPECT_TRUE(c.training().running());
+  c.training().wait();
+  ASSERT_FALSE(c.training().running());
+  const auto& outcome = c.training().outcome();
+  ASSERT_TRUE(outcome.has_value());
+  ASSERT_TRUE(outcome->error.empty()) << outcome->error;
+  EXPECT_FALSE(outcome->result.cancelled);
+  EXPECT_EQ(outcome->result.iterations_run, 15);
+  EXPECT_EQ(c.training().best_scores().size(), 15u);
+  for (std::size_t i = 1; i < c.training().best_scores().size(); ++i) {
+    EXPECT_GE(c.training().best_scores()[i], c.training().best_scores()[i - 1]);  // global best never drops
+  }
+  ASSERT_TRUE(c.training().latest().has_value());
+  EXPECT_EQ(c.training().latest()->particles.size(), 12u);
+  // The test split (image 5) is counted apart from the train split.
+  EXPECT_GT(outcome->test_counts.marking.tp + outcome->test_counts.marking.fn, 0);
+
+  ASSERT_TRUE(c.apply_training_result());
+  EXPECT_EQ(c.thresholds(), outcome->result.thresholds);
+  EXPECT_LT(c.train_counts().marking.fn, missed);  // live metrics follow the applied thresholds
+}
+
+TEST(TrainingJob, CancelStopsEarlyWithTheBestSoFar) {
+  Labelled data;
+  fs::StudioController c(fieldlines::Project::load(data.file), data.file);
+  c.start_training(small_training(1'000'000));
+  // Wait for the first progress message through the UI-thread poll, then cancel.
+  const auto end = std::chrono::steady_clock::now() + 30s;
+  while (!c.training().latest() && std::chrono::steady_clock::now() < end) {
+    c.poll();
+    std::this_thread::sleep_for(5ms);
+  }
+  ASSERT_TRUE(c.training().latest().has_value());
+  c.cancel_training();
+  c.training().wait();
+  const auto& outcome = c.training().outcome();
+  ASSERT_TRUE(outcome.has_value());
+  EXPECT_TRUE(outcome->result.cancelled);
+  EXPECT_LT(outcome->result.iterations_run, 1'000'000);
+  EXPECT_GE(outcome->result.iterations_run, 1);
+}
+
+TEST(TrainingJob, NothingLabelledIsAnErrorNotACrash) {
+  studio_test::TempDir dir("nolabels");
+  const auto file = studio_test::write_project(dir.path(), 2, 4);
+  fs::StudioController c(fieldlines::Project::load(file), file);
+  c.start_training(small_training(5));
+  c.training().wait();
+  ASSERT_TRUE(c.training().outcome().has_value());
+  EXPECT_FALSE(c.training().outcome()->error.empty());
+  EXPECT_FALSE(c.apply_training_result());
+}
+
+TEST(TrainingJob, RestartReplacesARunningJob) {
+  Labelled data;
+  fs::StudioController c(fieldlines::Project::load(data.file), data.file);
+  c.start_training(small_training(1'000'000));
+  c.start_training(small_training(4));  // cancels and joins the first
+  c.training().wait();
+  ASSERT_TRUE(c.training().outcome().has_value());
+  EXPECT_EQ(c.training().outcome()->result.iterations_run, 4);
+  EXPECT_EQ(c.training().best_scores().size(), 4u);
+}
+
+TEST(DetectionJob, DetectsAFolderProjectInTheBackgroundAndKeepsLabels) {
+  studio_test::TempDir dir("detect");
+  // Three pictures with long white lines on green; the project has no segments yet.
+  fieldlines::Project p;
+  for (int i = 0; i < 3; ++i) {
+    fieldlines::Segment a, b;
+    a.x0 = 30, a.y0 = 60.0f + 40 * i, a.x1 = 600, a.y1 = 80.0f + 40 * i;
+    b.x0 = 320, b.y0 = 20, b.x1 = 330, b.y1 = 460;
+    const std::string name = "f" + std::to_string(i) + ".png";
+    cv::imwrite((dir.path() / name).string(), studio_test::field_image(640, 480, {a, b}));
+    p.images.push_back({name, {}, 0});
+  }
+  const auto file = dir.path() / "p.json";
+  p.save(file);
+  fs::StudioController c(fieldlines::Project::load(file), file);
+  EXPECT_TRUE(c.needs_detection(0));
+  c.detect_all(true);
+  EXPECT_EQ(c.detection().total(), 3u);
+  const auto end = std::chrono::steady_clock::now() + 60s;
+  while (c.detection().running() && std::chrono::steady_clock::now() < end) {
+    c.poll();
+    std::this_thread::sleep_for(5ms);
+  }
+  ASSERT_FALSE(c.detection().running());
+  EXPECT_EQ(c.detection().done(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_FALSE(c.needs_detection(i)) << i;
+    EXPECT_GE(c.project().images[i].segments.size(), 2u) << i;  // both edges of each line at least
+    EXPECT_GT(c.project().images[i].detect_ms, 0) << i;
+  }
+  EXPECT_GT(c.mean_detect_ms(), 0);
+  EXPECT_EQ(fieldlines::Project::load(file).images[2].segments.size(), c.project().images[2].segments.size());
+
+  // Label one segment, re-detect everything: the label follows the same line.
+  const std::size_t first[] = {0};
+  ASSERT_TRUE(c.label(first, Label::Marking));
+  const auto labelled = c.segments()[0];
+  c.detect_all(false);
+  c.detection().wait();
+  c.poll();
+  std::size_t marked = 0;
+  for (const auto& s : c.project().images[0].segments) {
+    if (s.label == Label::Marking && std::abs(s.y0 - labelled.y0) < 3) ++marked;
+  }
+  EXPECT_GE(marked, 1u);
+  EXPECT_FALSE(c.can_undo());  // segment indices changed: history cleared
+}

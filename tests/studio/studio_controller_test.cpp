@@ -1,0 +1,237 @@
+// The studio's controller without a window: labelling, undo/redo, autosave, thresholds, metrics.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "fieldlines/dataset.hpp"
+#include "fieldlines/error.hpp"
+#include "fixtures.hpp"
+#include "studio_controller.hpp"
+
+namespace fs = fieldlines::studio;
+using fieldlines::Label;
+using fieldlines::Project;
+
+namespace {
+
+struct Session {
+  explicit Session(int images = 5, int segments = 6, fs::ControllerOptions options = {})
+      : dir("controller"), file(studio_test::write_project(dir.path(), images, segments)),
+        controller(Project::load(file), file, options) {}
+  Project on_disk() const { return Project::load(file); }
+  studio_test::TempDir dir;
+  std::filesystem::path file;
+  fs::StudioController controller;
+};
+
+std::vector<Label> labels_of(const Project& p, std::size_t image) {
+  std::vector<Label> out;
+  for (const auto& s : p.images.at(image).segments) out.push_back(s.label);
+  return out;
+}
+
+}  // namespace
+
+TEST(StudioController, LoadsTheCurrentImagePixels) {
+  Session s;
+  EXPECT_EQ(s.controller.image().cols, 320);
+  EXPECT_EQ(s.controller.image().rows, 240);
+  EXPECT_TRUE(s.controller.image_error().empty());
+  EXPECT_EQ(s.controller.segments().size(), 6u);
+}
+
+TEST(StudioController, LabelIsAutosavedAtOnce) {
+  Session s;
+  const std::size_t one[] = {2};
+  ASSERT_TRUE(s.controller.label(one, Label::Marking));
+  EXPECT_EQ(s.on_disk().images[0].segments[2].label, Label::Marking);
+  EXPECT_EQ(s.controller.save_count(), 1u);
+  // The same label again changes nothing and writes nothing.
+  EXPECT_FALSE(s.controller.label(one, Label::Marking));
+  EXPECT_EQ(s.controller.save_count(), 1u);
+}
+
+TEST(StudioController, HoveredLabelling) {
+  Session s;
+  EXPECT_FALSE(s.controller.label_hovered(Label::Boundary));  // nothing hovered
+  s.controller.set_hovered(3);
+  EXPECT_TRUE(s.controller.label_hovered(Label::Boundary));
+  EXPECT_EQ(s.on_disk().images[0].segments[3].label, Label::Boundary);
+  s.controller.set_hovered(99);  // out of range: nothing hovered
+  EXPECT_FALSE(s.controller.hovered().has_value());
+}
+
+TEST(StudioController, UndoRedoRestoreLabelsOnDisk) {
+  Session s;
+  const std::size_t first[] = {0, 1, 2};
+  const std::size_t second[] = {2, 3};
+  ASSERT_TRUE(s.controller.label(first, Label::Marking));
+  ASSERT_TRUE(s.controller.label(second, Label::None));
+  const auto after_both = labels_of(s.on_disk(), 0);
+  EXPECT_EQ(after_both, (std::vector<Label>{Label::Marking, Label::Marking, Label::None, Label::None,
+                                            Label::Unlabelled, Label::Unlabelled}));
+  ASSERT_TRUE(s.controller.undo());  // the second action, as one step
+  EXPECT_EQ(labels_of(s.on_disk(), 0), (std::vector<Label>{Label::Marking, Label::Marking, Label::Marking,
+                                                           Label::Unlabelled, Label::Unlabelled, Label::Unlabelled}));
+  ASSERT_TRUE(s.controller.undo());
+  EXPECT_EQ(labels_of(s.on_disk(), 0), std::vector<Label>(6, Label::Unlabelled));
+  EXPECT_FALSE(s.controller.undo());
+  ASSERT_TRUE(s.controller.redo());
+  ASSERT_TRUE(s.controller.redo());
+  EXPECT_EQ(labels_of(s.on_disk(), 0), after_both);
+  EXPECT_FALSE(s.controller.redo());
+}
+
+TEST(StudioController, UndoShowsTheImageItChanges) {
+  Session s;
+  s.controller.select_image(3);
+  const std::size_t one[] = {1};
+  ASSERT_TRUE(s.controller.label(one, Label::Boundary));
+  s.controller.select_image(0);
+  ASSERT_TRUE(s.controller.undo());
+  EXPECT_EQ(s.controller.current(), 3u);
+  EXPECT_EQ(s.on_disk().images[3].segments[1].label, Label::Unlabelled);
+}
+
+TEST(StudioController, NewEditDropsTheRedoBranch) {
+  Session s;
+  const std::size_t a[] = {0};
+  const std::size_t b[] = {1};
+  s.controller.label(a, Label::Marking);
+  s.controller.undo();
+  EXPECT_TRUE(s.controller.can_redo());
+  s.controller.label(b, Label::None);
+  EXPECT_FALSE(s.controller.can_redo());
+}
+
+TEST(StudioController, LabelTheRestAsNone) {
+  Session s;
+  const std::size_t one[] = {4};
+  s.controller.label(one, Label::Marking);
+  ASSERT_TRUE(s.controller.label_rest_as_none());
+  const auto labels = labels_of(s.on_disk(), 0);
+  EXPECT_EQ(labels[4], Label::Marking);
+  EXPECT_EQ(std::count(labels.begin(), labels.end(), Label::None), 5);
+  EXPECT_FALSE(s.controller.label_rest_as_none());  // nothing left
+  s.controller.undo();
+  const auto undone = labels_of(s.on_disk(), 0);
+  EXPECT_EQ(std::count(undone.begin(), undone.end(), Label::Unlabelled), 5);
+}
+
+TEST(StudioController, NavigationWrapsAround) {
+  Session s(3);
+  s.controller.previous_image();
+  EXPECT_EQ(s.controller.current(), 2u);
+  s.controller.next_image();
+  EXPECT_EQ(s.controller.current(), 0u);
+  s.controller.next_image();
+  EXPECT_EQ(s.controller.current(), 1u);
+  const auto generation = s.controller.image_generation();
+  s.controller.select_image(7);  // out of range: ignored
+  EXPECT_EQ(s.controller.current(), 1u);
+  EXPECT_EQ(s.controller.image_generation(), generation);
+}
+
+TEST(StudioController, ThresholdChangeReclassifiesFromCachedFeatures) {
+  Session s;
+  // Defaults: even grid segments are markings, odd ones boundaries.
+  auto p = s.controller.predictions();
+  ASSERT_EQ(p.size(), 6u);
+  EXPECT_EQ(p[0], Label::Marking);
+  EXPECT_EQ(p[1], Label::Boundary);
+  // Label image 0 by the truth of the fixture; all correct: precision and recall 1.
+  const std::size_t evens[] = {0, 2, 4};
+  const std::size_t odds[] = {1, 3, 5};
+  s.controller.label(evens, Label::Marking);
+  s.controller.label(odds, Label::Boundary);
+  EXPECT_EQ(s.controller.train_counts().marking.tp, 3);
+  EXPECT_EQ(s.controller.train_counts().marking.fn, 0);
+  EXPECT_EQ(s.controller.progress(0).errors, 0);
+
+  // A marking length threshold above every segment's saliency: markings are missed.
+  auto t = s.controller.thresholds();
+  t.marking.thresholds.min_length = 250;
+  s.controller.set_thresholds(t);
+  EXPECT_EQ(s.controller.predictions()[0], Label::None);
+  EXPECT_EQ(s.controller.predictions()[1], Label::Boundary);
+  EXPECT_EQ(s.controller.train_counts().marking.tp, 0);
+  EXPECT_EQ(s.controller.train_counts().marking.fn, 3);
+  EXPECT_EQ(s.controller.progress(0).errors, 3);
+  EXPECT_EQ(s.controller.train_counts().boundary.tp, 3);
+}
+
+TEST(StudioController, ThresholdChangesAreSavedAfterAPause) {
+  Session s;
+  auto t = s.controller.thresholds();
+  t.boundary.thresholds.min_projection = 77;
+  s.controller.set_thresholds(t);
+  EXPECT_TRUE(s.controller.has_unsaved_settings());
+  s.controller.poll(10.0);  // first poll after the change starts the pause
+  s.controller.poll(10.0 + fs::StudioController::settings_save_delay_s / 2);
+  EXPECT_NE(s.on_disk().thresholds.boundary.thresholds.min_projection, 77);
+  s.controller.poll(10.0 + fs::StudioController::settings_save_delay_s);
+  EXPECT_FALSE(s.controller.has_unsaved_settings());
+  EXPECT_EQ(s.on_disk().thresholds.boundary.thresholds.min_projection, 77);
+}
+
+TEST(StudioController, FlushSavesPendingSettings) {
+  Session s;
+  auto d = s.controller.detector_params();
+  d.gradient_threshold = 55;
+  s.controller.set_detector_params(d);
+  s.controller.flush();
+  EXPECT_EQ(s.on_disk().detector.gradient_threshold, 55);
+}
+
+TEST(StudioController, TrainAndTestSplitsCountSeparately) {
+  Session s(5);  // image index 4 (the 5th) is the test split
+  EXPECT_TRUE(s.controller.is_test_image(4));
+  EXPECT_FALSE(s.controller.is_test_image(0));
+  const std::size_t all[] = {0, 1, 2, 3, 4, 5};
+  s.controller.select_image(4);
+  s.controller.label(all, Label::Marking);
+  EXPECT_EQ(s.controller.test_counts().marking.tp, 3);
+  EXPECT_EQ(s.controller.test_counts().marking.fn, 3);
+  EXPECT_EQ(s.controller.train_counts().marking.tp, 0);
+  s.controller.select_image(1);
+  s.controller.label(all, Label::Marking);
+  EXPECT_EQ(s.controller.train_counts().marking.tp, 3);
+  EXPECT_EQ(s.controller.labelled_total(), 12u);
+}
+
+TEST(StudioController, NextImageWithErrors) {
+  Session s(5);
+  const std::size_t wrong[] = {1};  // a boundary labelled as marking: an error
+  s.controller.select_image(3);
+  s.controller.label(wrong, Label::Marking);
+  s.controller.select_image(0);
+  ASSERT_TRUE(s.controller.next_image_with_errors());
+  EXPECT_EQ(s.controller.current(), 3u);
+  s.controller.undo();
+  EXPECT_FALSE(s.controller.next_image_with_errors());
+}
+
+TEST(StudioController, AutosaveFailureKeepsTheEditAndReportsIt) {
+  studio_test::TempDir dir("badsave");
+  const auto file = studio_test::write_project(dir.path(), 1, 4);
+  fs::StudioController c(Project::load(file), dir.path() / "missing-folder" / "p.json");
+  const std::size_t one[] = {0};
+  ASSERT_TRUE(c.label(one, Label::Marking));
+  EXPECT_FALSE(c.save_error().empty());
+  EXPECT_EQ(c.segments()[0].label, Label::Marking);
+}
+
+TEST(StudioController, ExportAndImportRobotThresholds) {
+  Session s;
+  auto t = s.controller.thresholds();
+  t.marking.thresholds.max_angle_deg = 33;
+  s.controller.set_thresholds(t);
+  const auto out = s.dir.path() / "robot.json";
+  s.controller.export_thresholds(out);
+  t.marking.thresholds.max_angle_deg = 10;
+  s.controller.set_thresholds(t);
+  s.controller.import_thresholds(out);
+  EXPECT_FLOAT_EQ(s.controller.thresholds().marking.thresholds.max_angle_deg, 33);
+  EXPECT_THROW(s.controller.import_thresholds(s.dir.path() / "nope.json"), fieldlines::Error);
+}
