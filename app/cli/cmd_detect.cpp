@@ -91,14 +91,19 @@ std::string with_path(const fs::path& path, const std::string& message) {
 // Overlay file names, fixed before the batch so they do not depend on thread timing: <stem>.png,
 // or <stem>-2.png... when two inputs share a stem or the name would overwrite an input.
 std::vector<fs::path> overlay_paths(const std::vector<fs::path>& images, const fs::path& dir) {
+  auto canonical = [](const fs::path& p) {
+    std::error_code ec;
+    const fs::path c = fs::weakly_canonical(p, ec);
+    return ec ? fs::absolute(p, ec).lexically_normal() : c;
+  };
   std::set<fs::path> inputs;
-  for (const auto& p : images) inputs.insert(fs::weakly_canonical(p));
+  for (const auto& p : images) inputs.insert(canonical(p));
   std::set<std::string> used;
   std::vector<fs::path> out;
   for (const auto& p : images) {
     const std::string stem = p.stem().string().empty() ? "image" : p.stem().string();
     std::string name = stem + ".png";
-    for (int k = 2; used.count(name) || inputs.count(fs::weakly_canonical(dir / name)); ++k)
+    for (int k = 2; used.count(name) || inputs.count(canonical(dir / name)); ++k)
       name = stem + "-" + std::to_string(k) + ".png";
     used.insert(name);
     out.push_back(dir / name);
