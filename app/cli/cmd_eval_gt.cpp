@@ -1,0 +1,157 @@
+// `fieldlines eval --gt DIR`: detection + classification scored against synthetic ground truth.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "args.hpp"
+#include "commands.hpp"
+#include "fieldlines/atomic_file.hpp"
+#include "fieldlines/detector.hpp"
+#include "fieldlines/error.hpp"
+#include "fieldlines/gt_eval.hpp"
+#include "fieldlines/image_io.hpp"
+#include "fieldlines/synth.hpp"
+#include "fieldlines/thresholds_file.hpp"
+#include "synth_set.hpp"
+
+namespace fieldlines::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kHelp = R"(usage: fieldlines eval --gt DIR [DIR...] [--thresholds FILE] [options]
+
+Detects and classifies the segments of every image of synthetic sets (made by `fieldlines
+synth`; each image's truth is DIR/truth/<name>.json) and scores them against the exact ground
+truth, per scene and lighting condition and pooled:
+  precision  predicted segments of a class whose truth label agrees (a segment's truth label is
+             the class whose line edges it follows for >= 60% of its length, within 2.5 px and
+             10 degrees; otherwise none)
+  recall     share of the visible line-edge length covered by segments predicted as that class
+             (both edges of a painted line count; parts under --min-width px are not visible)
+
+options:
+  --gt DIR           a synthetic set (more sets as extra arguments)
+  --thresholds FILE  detector parameters and thresholds (default: the built-in defaults)
+  --max-distance PX  edge match distance (default 2.5)
+  --min-width PX     painted parts narrower than this do not count in recall (default 1)
+  --markdown         print the table as Markdown
+  --json OUT         write the scores as JSON (per group and total)
+  -h, --help         this help
+Exit codes: 0 ok, 1 some images could not be read (they are skipped), 2 usage or fatal error.
+)";
+
+struct Group {
+  GtScore score;
+  double detect_ms = 0;
+};
+
+void print_row(bool markdown, const std::string& scene, const std::string& condition, const Group& g) {
+  const GtScore& s = g.score;
+  const double ms = s.images > 0 ? g.detect_ms / s.images : 0;
+  if (markdown) {
+    std::printf("| %s | %s | %d | %.3f | %.3f | %.3f | %.3f | %ld | %.1f |\n", scene.c_str(), condition.c_str(),
+                s.images, s.marking.precision(), s.marking.recall(), s.boundary.precision(), s.boundary.recall(),
+                s.marking.predicted + s.boundary.predicted + s.none_predicted, ms);
+  } else {
+    std::printf("%-5s %-11s %6d %9.3f %9.3f %10.3f %10.3f %9ld %9.1f\n", scene.c_str(), condition.c_str(), s.images,
+                s.marking.precision(), s.marking.recall(), s.boundary.precision(), s.boundary.recall(),
+                s.marking.predicted + s.boundary.predicted + s.none_predicted, ms);
+  }
+}
+
+nlohmann::json to_json(const Group& g) {
+  auto cls = [](const GtClassScore& c) {
+    return nlohmann::json{{"predicted", c.predicted}, {"correct", c.correct},     {"precision", c.precision()},
+                          {"visible_px", c.visible_px}, {"covered_px", c.covered_px}, {"recall", c.recall()}};
+  };
+  return {{"images", g.score.images},
+          {"marking", cls(g.score.marking)},
+          {"boundary", cls(g.score.boundary)},
+          {"none", {{"predicted", g.score.none_predicted}, {"correct", g.score.none_correct}}},
+          {"detect_ms_mean", g.score.images > 0 ? g.detect_ms / g.score.images : 0.0}};
+}
+
+}  // namespace
+
+std::vector<SynthSetImage> list_synth_set(const fs::path& dir) {
+  std::vector<SynthSetImage> out;
+  for (const fs::path& image : list_images(dir)) {
+    const fs::path truth = synth::truth_path(image);
+    if (fs::exists(truth)) out.push_back({image, truth});
+  }
+  if (out.empty())
+    throw Error(dir.string() + ": no image with ground truth (expected <name>.png with truth/<name>.json, "
+                "as written by fieldlines synth)");
+  return out;
+}
+
+int cmd_eval_gt(const Args& args) {
+  const ParsedArgs a(args, {"--gt", "--thresholds", "--max-distance", "--min-width", "--json"},
+                     {"--markdown", "-h", "--help"});
+  if (a.flag("-h") || a.flag("--help")) {
+    std::fputs(kHelp, stdout);
+    return 0;
+  }
+  std::vector<fs::path> dirs;
+  if (const auto gt = a.value("--gt")) dirs.emplace_back(*gt);
+  for (const std::string& p : a.positionals()) dirs.emplace_back(p);
+  if (dirs.empty()) throw Error("--gt DIR is required (see fieldlines eval --gt --help)");
+  ThresholdsFile file;
+  if (const auto t = a.value("--thresholds")) file = load_thresholds_file(*t);
+  GtMatchParams match;
+  match.max_distance_px = static_cast<float>(a.double_or("--max-distance", match.max_distance_px, 0.1, 50));
+  match.min_width_px = static_cast<float>(a.double_or("--min-width", match.min_width_px, 0, 100));
+  const bool markdown = a.flag("--markdown");
+
+  LineDetector detector(file.detector, file.thresholds);
+  std::map<std::pair<std::string, std::string>, Group> groups;
+  Group total;
+  int failed = 0;
+  for (const fs::path& dir : dirs) {
+    for (const auto& [image, truth_file] : list_synth_set(dir)) {
+      try {
+        const synth::GroundTruth truth = synth::load_truth(truth_file);
+        const cv::Mat img = load_image(image);
+        const auto start = std::chrono::steady_clock::now();
+        const std::vector<Segment> segments = detector.detect(img);
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        const GtScore score = GtEdges(truth, match).score(segments);
+        Group& g = groups[{std::string(synth::to_string(truth.scene)), std::string(synth::to_string(truth.condition))}];
+        g.score += score, g.detect_ms += ms;
+        total.score += score, total.detect_ms += ms;
+      } catch (const Error& e) {
+        std::fprintf(stderr, "fieldlines eval: %s\n", e.what());
+        ++failed;
+      }
+    }
+  }
+  if (total.score.images == 0) throw Error("no image with ground truth found in the given folders");
+
+  if (markdown) {
+    std::printf("| scene | condition | images | marking precision | marking recall | boundary precision | "
+                "boundary recall | segments | detect ms |\n|---|---|---|---|---|---|---|---|---|\n");
+  } else {
+    std::printf("%-5s %-11s %6s %9s %9s %10s %10s %9s %9s\n", "scene", "condition", "images", "mark P", "mark R",
+                "bound P", "bound R", "segments", "det ms");
+  }
+  nlohmann::json out = {{"groups", nlohmann::json::array()}};
+  for (const auto& [key, g] : groups) {
+    print_row(markdown, key.first, key.second, g);
+    nlohmann::json j = to_json(g);
+    j["scene"] = key.first, j["condition"] = key.second;
+    out["groups"].push_back(j);
+  }
+  print_row(markdown, "all", "all", total);
+  out["total"] = to_json(total);
+  if (const auto json_path = a.value("--json")) write_file_atomically(*json_path, out.dump(2) + "\n");
+  return failed > 0 ? 1 : 0;
+}
+
+}  // namespace fieldlines::cli
