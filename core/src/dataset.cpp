@@ -44,7 +44,7 @@ Project parse_project(const std::string& text, const std::string& where) {
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
     throw Error(where + ": damaged project file (malformed JSON: " + e.what() + ")");
   }
   if (!j.is_object() || j.value("format", std::string()) != "fieldlines-project")

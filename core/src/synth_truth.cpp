@@ -275,7 +275,7 @@ GroundTruth load_truth(const std::filesystem::path& path) {
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
     throw Error(path.string() + ": malformed JSON (" + e.what() + ")");
   }
   return truth_from_json(j, path.string());
