@@ -37,6 +37,14 @@ TEST(GtEval, TruthLabelFollowsTheNearestParallelEdge) {
   EXPECT_EQ(edges.truth_label(seg(250, 195, 450, 195)), Label::None);      // only 25% on the line
 }
 
+TEST(GtEval, WhenAFarLineAndTheWallFootNearlyMeetTheNearerWins) {
+  synth::GroundTruth t = truth_with(1);
+  t.features[1].points = {{0, 202.5f, 0}, {400, 202.5f, 0}};  // wall foot 2.5 px below the line
+  const GtEdges edges(t);
+  EXPECT_EQ(edges.truth_label(seg(120, 200, 280, 200)), Label::Marking);
+  EXPECT_EQ(edges.truth_label(seg(120, 202.4f, 280, 202.4f)), Label::Boundary);
+}
+
 TEST(GtEval, WideLinesNeedBothEdgesForFullRecall) {
   const GtEdges edges(truth_with(10));
   const std::vector<Segment> one{seg(100, 195, 300, 195)};

@@ -11,6 +11,7 @@
 #include "fieldlines/error.hpp"
 #include "fieldlines/gt_eval.hpp"
 #include "fieldlines/image_io.hpp"
+#include "fieldlines/reference_csv.hpp"
 #include "fieldlines/synth.hpp"
 #include "fieldlines/thresholds_file.hpp"
 #include "synth_set.hpp"
@@ -30,6 +31,8 @@ labelling project that `fieldlines train` and the studio open.
 options:
   -o, --output PROJECT  project file to write (default DIR/project.json); image paths in it are
                         relative to its folder
+  --csv OUT             also write the labelled segments in the reference annotation CSV format
+                        (what the method's original tools read; `fieldlines train` reads it too)
   --thresholds FILE     detector parameters and start thresholds (default: built-in defaults)
   --max-distance PX     edge match distance (default 2.5)
   --quiet               no summary on stdout
@@ -43,7 +46,7 @@ example:
 }  // namespace
 
 int cmd_autolabel(const Args& args) {
-  const ParsedArgs a(args, {"-o", "--output", "--thresholds", "--max-distance"}, {"--quiet", "-h", "--help"});
+  const ParsedArgs a(args, {"-o", "--output", "--csv", "--thresholds", "--max-distance"}, {"--quiet", "-h", "--help"});
   if (a.flag("-h") || a.flag("--help")) {
     std::fputs(kHelp, stdout);
     return 0;
@@ -63,6 +66,7 @@ int cmd_autolabel(const Args& args) {
   LineDetector detector(file.detector, file.thresholds);
   const fs::path base = fs::absolute(out).parent_path();
   std::array<long, 3> totals{0, 0, 0};
+  std::vector<ReferenceRow> rows;
   int failed = 0;
   for (const auto& [image, truth_file] : list_synth_set(dir)) {
     try {
@@ -75,6 +79,7 @@ int cmd_autolabel(const Args& args) {
       const auto counts = label_from_truth(entry.segments, truth, match);
       for (std::size_t i = 0; i < 3; ++i) totals[i] += counts[i];
       entry.path = fs::relative(fs::absolute(image), base).generic_string();
+      for (const Segment& s : entry.segments) rows.push_back({entry.path, s});
       project.images.push_back(std::move(entry));
     } catch (const Error& e) {
       std::fprintf(stderr, "fieldlines autolabel: %s\n", e.what());
@@ -82,6 +87,7 @@ int cmd_autolabel(const Args& args) {
     }
   }
   project.save(out);
+  if (const auto csv = a.value("--csv")) write_reference_csv(*csv, rows);
   if (!a.flag("--quiet"))
     std::printf("%s: %zu images, %ld marking, %ld boundary, %ld none segments\n", out.string().c_str(),
                 project.images.size(), totals[2], totals[1], totals[0]);

@@ -52,17 +52,28 @@ struct Group {
   double detect_ms = 0;
 };
 
+// "-" where a score is undefined (nothing predicted, or nothing visible: Kid has no wall).
+std::string fmt(double value, bool defined) {
+  if (!defined) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", value);
+  return buf;
+}
+
 void print_row(bool markdown, const std::string& scene, const std::string& condition, const Group& g) {
   const GtScore& s = g.score;
   const double ms = s.images > 0 ? g.detect_ms / s.images : 0;
+  const std::string mp = fmt(s.marking.precision(), s.marking.predicted > 0);
+  const std::string mr = fmt(s.marking.recall(), s.marking.visible_px > 0);
+  const std::string bp = fmt(s.boundary.precision(), s.boundary.predicted > 0);
+  const std::string br = fmt(s.boundary.recall(), s.boundary.visible_px > 0);
+  const long segments = s.marking.predicted + s.boundary.predicted + s.none_predicted;
   if (markdown) {
-    std::printf("| %s | %s | %d | %.3f | %.3f | %.3f | %.3f | %ld | %.1f |\n", scene.c_str(), condition.c_str(),
-                s.images, s.marking.precision(), s.marking.recall(), s.boundary.precision(), s.boundary.recall(),
-                s.marking.predicted + s.boundary.predicted + s.none_predicted, ms);
+    std::printf("| %s | %s | %d | %s | %s | %s | %s | %ld | %.1f |\n", scene.c_str(), condition.c_str(), s.images,
+                mp.c_str(), mr.c_str(), bp.c_str(), br.c_str(), segments, ms);
   } else {
-    std::printf("%-5s %-11s %6d %9.3f %9.3f %10.3f %10.3f %9ld %9.1f\n", scene.c_str(), condition.c_str(), s.images,
-                s.marking.precision(), s.marking.recall(), s.boundary.precision(), s.boundary.recall(),
-                s.marking.predicted + s.boundary.predicted + s.none_predicted, ms);
+    std::printf("%-5s %-11s %6d %9s %9s %10s %10s %9ld %9.1f\n", scene.c_str(), condition.c_str(), s.images,
+                mp.c_str(), mr.c_str(), bp.c_str(), br.c_str(), segments, ms);
   }
 }
 

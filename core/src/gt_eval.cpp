@@ -90,20 +90,29 @@ Label GtEdges::truth_label(const Segment& s) const {
     near.push_back(&e);
   }
   if (near.empty()) return Label::None;
+  // Far from the camera a painted line and the wall foot can be closer than the match distance;
+  // when both classes match, the one nearer to the segment wins.
   int marking = 0, boundary = 0;
+  double marking_dist = 0, boundary_dist = 0;
+  const float far = 1e9f;
   for (int i = 0; i < n; ++i) {
     const float t = static_cast<float>(i) / static_cast<float>(n - 1);
     const float px = s.x0 + t * (s.x1 - s.x0), py = s.y0 + t * (s.y1 - s.y0);
-    bool m = false, b = false;
+    float dm = far, db = far;
     for (const Edge* e : near) {
-      if ((e->label == Label::Marking ? m : b) || distance_to_piece(px, py, *e) > params_.max_distance_px) continue;
-      (e->label == Label::Marking ? m : b) = true;
+      float& d = e->label == Label::Marking ? dm : db;
+      d = std::min(d, distance_to_piece(px, py, *e));
     }
-    marking += m, boundary += b;
+    if (dm <= params_.max_distance_px) ++marking, marking_dist += dm;
+    if (db <= params_.max_distance_px) ++boundary, boundary_dist += db;
   }
   const float need = params_.min_match * static_cast<float>(n);
-  if (std::max(marking, boundary) < need) return Label::None;
-  return marking >= boundary ? Label::Marking : Label::Boundary;
+  const bool is_marking = static_cast<float>(marking) >= need, is_boundary = static_cast<float>(boundary) >= need;
+  if (is_marking && is_boundary)
+    return marking_dist / marking <= boundary_dist / boundary ? Label::Marking : Label::Boundary;
+  if (is_marking) return Label::Marking;
+  if (is_boundary) return Label::Boundary;
+  return Label::None;
 }
 
 GtScore GtEdges::score(std::span<const Segment> detected) const {
