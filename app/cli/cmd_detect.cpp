@@ -24,6 +24,7 @@
 #include "output_file.hpp"
 #include "parallel_batch.hpp"
 #include "progress.hpp"
+#include "video_stream.hpp"
 
 namespace fieldlines::cli {
 namespace {
@@ -31,6 +32,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kHelp = R"(usage: fieldlines detect [options] PATH...
+       fieldlines detect [--thresholds FILE] --video FILE|/dev/videoN [--video-out OUT.avi] [--max-frames N]
 
 Detects line segments in each image (PATH is an image or a folder of images, read in
 file-name order), measures their colour gradients and classifies them as field marking,
@@ -47,6 +49,10 @@ options:
   --threads N       images processed in parallel, one detector per thread (default 1);
                     outputs keep the input order
   --quiet           no per-image lines on stdout, no progress on stderr
+  --video SRC       process a video file or a camera (/dev/videoN) frame by frame, with a
+                    live frames-per-second and latency readout on stderr
+  --video-out OUT   with --video: write the overlays as an MJPG video (.avi)
+  --max-frames N    with --video: stop after N frames
   -h, --help        this help
 
 A bad file (missing, corrupt, empty, unsupported pixel type, too large) is reported on
@@ -58,6 +64,8 @@ examples:
   fieldlines detect --json out/lines.json --draw out/overlays ../shared/data/elsed-ssl/images
   fieldlines detect --threads 2 --quiet --json lines.json a.png b.jpg more_frames/
   fieldlines detect --thresholds trained.json --csv segments.csv frames/
+  fieldlines detect --video match.mp4 --video-out match-lines.avi
+  fieldlines detect --thresholds robot.json --video /dev/video0 --max-frames 600
 )";
 
 struct Options {
@@ -66,10 +74,14 @@ struct Options {
   int threads = 1;
   bool quiet = false;
   std::vector<std::string> paths;
+  std::optional<std::string> video;
+  std::optional<fs::path> video_out;
+  long max_frames = -1;
 };
 
 Options parse(const Args& args) {
-  const ParsedArgs a(args, {"--thresholds", "--json", "--csv", "--draw", "--threads"}, {"--quiet", "--help", "-h"});
+  const ParsedArgs a(args, {"--thresholds", "--json", "--csv", "--draw", "--threads", "--video", "--video-out", "--max-frames"},
+                     {"--quiet", "--help", "-h"});
   Options o;
   o.help = a.flag("--help") || a.flag("-h");
   if (const auto v = a.value("--thresholds")) o.thresholds = *v;
@@ -79,6 +91,9 @@ Options parse(const Args& args) {
   o.threads = a.int_or("--threads", 1, 1, 256);
   o.quiet = a.flag("--quiet");
   o.paths = a.positionals();
+  o.video = a.value("--video");
+  if (const auto v = a.value("--video-out")) o.video_out = *v;
+  o.max_frames = a.int_or("--max-frames", -1, 1, 1 << 30);
   return o;
 }
 
@@ -134,6 +149,15 @@ int cmd_detect(const Args& args) {
     std::fputs(kHelp, stdout);
     return 0;
   }
+  if (opt.video) {
+    if (!opt.paths.empty() || opt.json || opt.csv || opt.draw)
+      throw Error("--video takes no PATH, --json, --csv or --draw (use --video-out for overlays)");
+    if (opt.video_out) check_output_path("--video-out", *opt.video_out);
+    ThresholdsFile video_config;
+    if (opt.thresholds) video_config = load_thresholds_file(*opt.thresholds);
+    return run_video_detection({*opt.video, opt.video_out, opt.max_frames, opt.quiet}, video_config);
+  }
+  if (opt.video_out || opt.max_frames >= 0) throw Error("--video-out and --max-frames go with --video");
   if (opt.paths.empty()) throw Error("no PATH given: name at least one image or folder (see --help)");
   // Output locations are checked before a possibly long batch, not after it.
   if (opt.json) check_output_path("--json", *opt.json);
