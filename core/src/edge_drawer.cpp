@@ -148,14 +148,10 @@ void EdgeDrawer::draw_tree(Pixel anchor, std::vector<Pixel>& anchor_pixels, bool
         Step predicted;
         if (maps_->dir[idx] == EdgeDir::Horizontal) predicted = last.x < px.x ? Step::Right : Step::Left;
         else predicted = last.y < px.y ? Step::Down : Step::Up;
-        pop = false;
-        Branch& b = stack_.back();
-        b.step = predicted;
-        b.px = px;
-        b.first_side = true;
-        b.prefix.clear();
-        b.prefix.push_back(chain_.back());
-        b.prefix.insert(b.prefix.end(), outliers_.begin(), outliers_.end());
+        push_or_reuse(pop, predicted, px, true);  // `pop` is still true here: reuses the top
+        std::vector<Pixel>& prefix = stack_.back().prefix;
+        prefix.push_back(chain_.back());
+        prefix.insert(prefix.end(), outliers_.begin(), outliers_.end());
       }
 
       const bool blocked = static_cast<int>(outliers_.size()) > kMaxOutliers || hit_owned;
