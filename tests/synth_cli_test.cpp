@@ -1,0 +1,92 @@
+// The synth, autolabel and eval --gt commands, run as the user runs them.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "shared_data.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int code;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+CliRun run(const std::string& args, const fs::path& dir) {
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string cmd = fieldlines::test::cli_path().string() + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+}
+
+class SynthCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / "fieldlines_synth_cli_test";
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(SynthCli, WritesImagesMasksAndTruthDeterministically) {
+  const fs::path a = dir_ / "a", b = dir_ / "b";
+  ASSERT_EQ(run("synth --scene kid --condition dim,shadows --n 2 --seed 4 --quiet -o " + a.string(), dir_).code, 0);
+  ASSERT_EQ(run("synth --scene kid --condition dim,shadows --n 2 --seed 4 --quiet -o " + b.string(), dir_).code, 0);
+  for (const char* stem : {"kid_4_0000", "kid_4_0001"}) {
+    const std::string png = std::string(stem) + ".png", json = std::string(stem) + ".json";
+    ASSERT_TRUE(fs::exists(a / png));
+    EXPECT_TRUE(fs::exists(a / "masks" / png));
+    EXPECT_TRUE(fs::exists(a / "truth" / json));
+    EXPECT_EQ(slurp(a / png), slurp(b / png)) << stem;
+    EXPECT_EQ(slurp(a / "truth" / json), slurp(b / "truth" / json));
+  }
+  EXPECT_NE(slurp(a / "truth" / "kid_4_0001.json").find("\"condition\":\"shadows\""), std::string::npos);
+}
+
+TEST_F(SynthCli, BadOptionsAreUsageErrors) {
+  const std::string o = " -o " + (dir_ / "x").string();
+  EXPECT_EQ(run("synth --scene futsal --n 1 --seed 1" + o, dir_).code, 2);
+  EXPECT_NE(run("synth --scene futsal --n 1 --seed 1" + o, dir_).err.find("futsal"), std::string::npos);
+  EXPECT_EQ(run("synth --scene ssl --seed 1" + o, dir_).code, 2);
+  EXPECT_EQ(run("synth --scene ssl --n 1 --seed 1 --line-width 1" + o, dir_).code, 2);
+  EXPECT_EQ(run("synth --scene ssl --n 1 --seed 1 --condition foggy" + o, dir_).code, 2);
+  EXPECT_EQ(run("synth --scene ssl --n 1 --seed 1", dir_).code, 2);
+  EXPECT_EQ(run("synth --help", dir_).code, 0);
+}
+
+TEST_F(SynthCli, AutolabelAndEvalAgainstTruth) {
+  const fs::path set = dir_ / "set";
+  ASSERT_EQ(run("synth --scene ssl --n 3 --seed 7 --quiet -o " + set.string(), dir_).code, 0);
+  const CliRun label = run("autolabel " + set.string() + " --csv " + (dir_ / "rows.csv").string(), dir_);
+  ASSERT_EQ(label.code, 0) << label.err;
+  EXPECT_TRUE(fs::exists(set / "project.json"));
+  const std::string csv = slurp(dir_ / "rows.csv");
+  EXPECT_EQ(csv.rfind("img_path,", 0), 0u);
+  EXPECT_NE(csv.find(",False,True,False"), std::string::npos);  // some marking rows
+  const CliRun eval = run("eval --gt " + set.string() + " --json " + (dir_ / "score.json").string(), dir_);
+  ASSERT_EQ(eval.code, 0) << eval.err;
+  EXPECT_NE(eval.out.find("ssl   artificial       3"), std::string::npos) << eval.out;
+  EXPECT_TRUE(fs::exists(dir_ / "score.json"));
+  // A folder without ground truth is a fatal error naming the folder.
+  fs::create_directories(dir_ / "empty");
+  const CliRun bad = run("eval --gt " + (dir_ / "empty").string(), dir_);
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("no image with ground truth"), std::string::npos) << bad.err;
+}
+
+}  // namespace
