@@ -69,6 +69,17 @@ TEST_F(SynthCli, BadOptionsAreUsageErrors) {
   EXPECT_EQ(run("synth --help", dir_).code, 0);
 }
 
+TEST_F(SynthCli, DemoIsMadeOnceAndItsPathPrinted) {
+  const fs::path demo = dir_ / "demo";
+  const CliRun first = run("synth --demo -o " + demo.string(), dir_);
+  ASSERT_EQ(first.code, 0) << first.err;
+  EXPECT_EQ(first.out, (demo / "project.json").string() + "\n");
+  EXPECT_TRUE(fs::exists(demo / "images" / "ssl_2024_0029.png"));
+  const auto stamp = fs::last_write_time(demo / "project.json");
+  EXPECT_EQ(run("synth --demo -o " + demo.string(), dir_).code, 0);
+  EXPECT_EQ(fs::last_write_time(demo / "project.json"), stamp);
+}
+
 TEST_F(SynthCli, AutolabelAndEvalAgainstTruth) {
   const fs::path set = dir_ / "set";
   ASSERT_EQ(run("synth --scene ssl --n 3 --seed 7 --quiet -o " + set.string(), dir_).code, 0);

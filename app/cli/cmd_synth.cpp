@@ -6,6 +6,7 @@
 
 #include "args.hpp"
 #include "commands.hpp"
+#include "fieldlines/demo.hpp"
 #include "fieldlines/error.hpp"
 #include "fieldlines/synth.hpp"
 
@@ -15,6 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kHelp = R"(usage: fieldlines synth --scene ssl|kid --n N --seed S -o DIR [options]
+       fieldlines synth --demo [-o DIR]
 
 Renders N synthetic camera frames of a soccer field with exact ground truth:
   DIR/<scene>_<seed>_<index>.png        the image (640x480 by default)
@@ -32,6 +34,10 @@ options:
   --first I            index of the first image (default 0), to extend a set
   --no-effects         no vignetting, blur, noise or JPEG (clean renders)
   -o, --output DIR     output folder (created if needed; required)
+  --demo               make the built-in demo project if it is missing (30 SSL frames, all
+                       conditions, 10 labelled) in DIR or the user's data folder
+                       ($XDG_DATA_HOME/fieldlines/demo or ~/.local/share/fieldlines/demo)
+                       and print the project file's path
   --quiet              no progress on stderr
   -h, --help           this help
 
@@ -61,12 +67,18 @@ std::vector<synth::Condition> parse_conditions(const std::string& text) {
 
 int cmd_synth(const Args& args) {
   const ParsedArgs a(args, {"--scene", "--condition", "--line-width", "--n", "--seed", "--first", "-o", "--output"},
-                     {"--no-effects", "--quiet", "--help", "-h"});
+                     {"--no-effects", "--demo", "--quiet", "--help", "-h"});
   if (a.flag("--help") || a.flag("-h")) {
     std::fputs(kHelp, stdout);
     return 0;
   }
   if (!a.positionals().empty()) throw Error("unexpected argument '" + a.positionals().front() + "'");
+  if (a.flag("--demo")) {
+    DemoParams demo;
+    if (const auto o = a.has("-o") ? a.value("-o") : a.value("--output")) demo.folder = *o;
+    std::printf("%s\n", ensure_demo(demo).string().c_str());
+    return 0;
+  }
   for (const char* required : {"--scene", "--n", "--seed"})
     if (!a.has(required)) throw Error(std::string(required) + " is required (see fieldlines synth --help)");
   const auto out = a.has("-o") ? a.value("-o") : a.value("--output");
