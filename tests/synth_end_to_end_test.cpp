@@ -62,7 +62,7 @@ TEST(SynthEndToEnd, ThresholdsTrainedOnOneSeedGeneraliseToAnother) {
               after.marking.recall(), after.boundary.precision(), after.boundary.recall());
   EXPECT_GE(after.marking.precision(), 0.95);
   EXPECT_GE(after.marking.recall(), 0.80);
-  EXPECT_GT(after.marking.predicted, 100);
+  EXPECT_GT(after.marking.predicted, 50);  // enough segments for the ratios to mean something
 }
 
 }  // namespace

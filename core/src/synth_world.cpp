@@ -235,7 +235,8 @@ World make_world(const FieldModel& field, const ClutterParams& clutter, Rand& ra
   w.room_lo = {-field.carpet_half_x() - mx, -field.carpet_half_y() - my, 0};
   w.room_hi = {field.carpet_half_x() + rand.uniform(1.5, 3.5), field.carpet_half_y() + rand.uniform(1.5, 3.5),
                rand.uniform(3.0, 4.5)};
-  w.carpet = jitter(field.scene == Scene::Ssl ? Colour(58, 150, 112) : Colour(60, 140, 70), rand, 0.08f);
+  // SSL: the mean carpet colour of the authors' real frames (about 89, 157, 121 after vignetting).
+  w.carpet = jitter(field.scene == Scene::Ssl ? Colour(92, 168, 130) : Colour(60, 140, 70), rand, 0.08f);
   w.paint = jitter(Colour(236, 238, 234), rand, 0.03f);
   w.floor = jitter(Colour(150, 146, 138), rand, 0.25f);
   w.room_wall = jitter(Colour(222, 224, 222), rand, 0.08f);

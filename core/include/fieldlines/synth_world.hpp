@@ -46,7 +46,7 @@ void validate(const ClutterParams& params);
 struct World {
   FieldModel field;
   Eigen::Vector3d room_lo{-8, -7, 0}, room_hi{8, 7, 3.5};
-  Colour carpet{58, 150, 112}, paint{236, 238, 234}, floor{150, 146, 138};
+  Colour carpet{92, 168, 130}, paint{236, 238, 234}, floor{150, 146, 138};
   Colour room_wall{222, 224, 222}, ceiling{200, 200, 200};
   double tile_size = 0.3;  // grout lines on the room walls
   std::uint32_t texture_seed = 0;  // carpet and floor texture
