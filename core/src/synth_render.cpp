@@ -162,11 +162,12 @@ class Shader {
         break;
       }
       case Surface::RoomWall: {
+        // Tile grout, box-filtered over the pixel footprint like the paint, so far tiles fade
+        // instead of breaking into aliased dashes.
         const double a = std::abs(hit.normal.x()) > 0.5 ? p.y() : p.x();
-        const double fa = a / w_.tile_size - std::floor(a / w_.tile_size);
-        const double fz = p.z() / w_.tile_size - std::floor(p.z() / w_.tile_size);
-        const bool grout = fa < 0.03 || fz < 0.03;
-        s.rgb = w_.room_wall * (grout ? 0.85f : 1.0f) * vertical_light(hit.normal);
+        const double footprint = std::max(hit.t * dir.norm() * scale / cam_.intrinsics().fx, 1e-6);
+        const float grout = std::max(grout_coverage(a, footprint), grout_coverage(p.z(), footprint));
+        s.rgb = w_.room_wall * (1.0f - 0.15f * grout) * vertical_light(hit.normal);
         break;
       }
       case Surface::Ceiling:
@@ -194,6 +195,15 @@ class Shader {
   float vertical_light(const Vector3d& n) const {
     const double direct = std::max(0.0, n.dot(l_.sun));
     return l_.ambient + (1 - l_.ambient) * static_cast<float>(direct) * 1.2f;
+  }
+
+  // Share of a pixel (footprint metres wide) covered by the grout line nearest coordinate x.
+  float grout_coverage(double x, double footprint) const {
+    const double half = 0.015 * w_.tile_size;  // grout is 3 % of a tile
+    const double f = x / w_.tile_size - std::floor(x / w_.tile_size);
+    const double d = std::min(f, 1 - f) * w_.tile_size;  // distance to the nearest grout centre
+    const double overlap = std::min(half, d + footprint / 2) - std::max(-half, d - footprint / 2);
+    return overlap > 0 ? static_cast<float>(std::min(1.0, overlap / footprint)) : 0.0f;
   }
 
   // Box-filtered coverage of the pixel's ground footprint by paint (lines combine as 1-prod(1-c)).
