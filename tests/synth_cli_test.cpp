@@ -35,7 +35,9 @@ CliRun run(const std::string& args, const fs::path& dir) {
 class SynthCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / "fieldlines_synth_cli_test";
+    // One folder per test: ctest may run them in parallel.
+    dir_ = fs::temp_directory_path() /
+           (std::string("fieldlines_synth_cli_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
