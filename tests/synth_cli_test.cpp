@@ -5,6 +5,8 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "shared_data.hpp"
@@ -37,7 +39,8 @@ class SynthCli : public ::testing::Test {
   void SetUp() override {
     // One folder per test: ctest may run them in parallel.
     dir_ = fs::temp_directory_path() /
-           (std::string("fieldlines_synth_cli_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+           (std::string("fieldlines_synth_cli_") + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+            std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

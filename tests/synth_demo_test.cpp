@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <set>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -31,7 +33,7 @@ TEST(Demo, DefaultFolderFollowsXdgDataHome) {
 }
 
 TEST(Demo, GeneratesOnceIntoAProjectFile) {
-  const fs::path dir = fs::temp_directory_path() / "fieldlines_demo_test" / "demo";
+  const fs::path dir = fs::temp_directory_path() / ("fieldlines_demo_test_" + std::to_string(::getpid())) / "demo";
   fs::remove_all(dir.parent_path());
   DemoParams p;
   p.folder = dir;

@@ -2,6 +2,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
@@ -53,7 +55,7 @@ TEST(SynthDeterminism, ImagesHaveTheRequestedSizeAndPlausibleColours) {
 }
 
 TEST(SynthTruthFile, RoundTripsThroughDisk) {
-  const auto dir = std::filesystem::temp_directory_path() / "fieldlines_synth_roundtrip";
+  const auto dir = std::filesystem::temp_directory_path() / ("fieldlines_synth_roundtrip_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   const SynthSample s = generate(SynthParams{}, 9, 2);
   const SampleFiles files = write_sample(s, dir);
@@ -74,7 +76,7 @@ TEST(SynthTruthFile, RoundTripsThroughDisk) {
 }
 
 TEST(SynthTruthFile, MalformedFilesGiveClearErrors) {
-  const auto dir = std::filesystem::temp_directory_path() / "fieldlines_synth_bad";
+  const auto dir = std::filesystem::temp_directory_path() / ("fieldlines_synth_bad_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   auto write = [&](const char* name, const std::string& text) {
     std::ofstream(dir / name) << text;
