@@ -1,5 +1,7 @@
 #include "fieldlines/feature_table.hpp"
 
+#include <cmath>
+
 namespace fieldlines {
 
 FeatureTable::FeatureTable(std::span<const Segment> segments, const Thresholds& base) {
@@ -23,26 +25,42 @@ FeatureTable::FeatureTable(std::span<const Segment> segments, const Thresholds& 
   }
 }
 
-Counts FeatureTable::count(const ClassThresholds& b, const ClassThresholds& m) const {
-  const std::size_t n = size();
-  const float* len = length.data();
-  const float *bp = boundary_proj.data(), *ba = boundary_angle.data();
-  const float *mp0 = marking_proj[0].data(), *ma0 = marking_angle[0].data();
-  const float *mp1 = marking_proj[1].data(), *ma1 = marking_angle[1].data();
-  const std::int32_t *ism = is_marking.data(), *isb = is_boundary.data();
+namespace {
+
+// The scoring loop; kBoundary = false skips the boundary test (a boundary whose min length is
+// +inf never passes), which is the hot case of training the marking class alone.
+template <bool kBoundary>
+void count_loop(const FeatureTable& f, const ClassThresholds& b, const ClassThresholds& m, std::int32_t& tpm,
+                std::int32_t& npm, std::int32_t& tpb, std::int32_t& npb) {
+  const std::size_t n = f.size();
+  const float* len = f.length.data();
+  const float *bp = f.boundary_proj.data(), *ba = f.boundary_angle.data();
+  const float *mp0 = f.marking_proj[0].data(), *ma0 = f.marking_angle[0].data();
+  const float *mp1 = f.marking_proj[1].data(), *ma1 = f.marking_angle[1].data();
+  const std::int32_t *ism = f.is_marking.data(), *isb = f.is_boundary.data();
   const float bl = b.min_length, bpr = b.min_projection, ban = b.max_angle_deg;
   const float ml = m.min_length, mpr = m.min_projection, man = m.max_angle_deg;
   // 32-bit lanes, bitwise & / | and no branches: the compiler vectorises this loop.
-  std::int32_t tpm = 0, npm = 0, tpb = 0, npb = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const std::int32_t pb = (len[i] >= bl) & (bp[i] >= bpr) & (ba[i] <= ban);
+    std::int32_t pb = 0;
+    if constexpr (kBoundary) pb = (len[i] >= bl) & (bp[i] >= bpr) & (ba[i] <= ban);
     const std::int32_t pm = (pb ^ 1) & (len[i] >= ml) &
                             (((mp0[i] >= mpr) & (ma0[i] <= man)) | ((mp1[i] >= mpr) & (ma1[i] <= man)));
     tpm += pm & ism[i];
     npm += pm;
-    tpb += pb & isb[i];
-    npb += pb;
+    if constexpr (kBoundary) {
+      tpb += pb & isb[i];
+      npb += pb;
+    }
   }
+}
+
+}  // namespace
+
+Counts FeatureTable::count(const ClassThresholds& b, const ClassThresholds& m) const {
+  std::int32_t tpm = 0, npm = 0, tpb = 0, npb = 0;
+  if (std::isinf(b.min_length) && b.min_length > 0) count_loop<false>(*this, b, m, tpm, npm, tpb, npb);
+  else count_loop<true>(*this, b, m, tpm, npm, tpb, npb);
   const long fpm = npm - tpm, fpb = npb - tpb;
   Counts c;
   c.marking = {tpm, fpm, positives_marking - tpm};

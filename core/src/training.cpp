@@ -61,7 +61,22 @@ void tally_signed(Counts& c, Label truth, Label predicted, long sign) {
 class Polisher {
  public:
   Polisher(const FeatureTable& f, const TrainParams& p, std::vector<Dim> dims)
-      : f_(f), p_(p), dims_(std::move(dims)) {}
+      : f_(f), p_(p), dims_(std::move(dims)) {
+    // Every sweep visits segments in the order of one feature; sorting once here keeps each
+    // sweep linear. Marking orders hold (segment, test) pairs as 2 * segment + test.
+    const auto n = static_cast<std::uint32_t>(f_.size());
+    const auto sorted = [](std::uint32_t count, auto value) {
+      std::vector<std::uint32_t> o(count);
+      std::iota(o.begin(), o.end(), 0u);
+      std::stable_sort(o.begin(), o.end(), [&](std::uint32_t a, std::uint32_t b) { return value(a) > value(b); });
+      return o;
+    };
+    by_length_ = sorted(n, [&](std::uint32_t i) { return f_.length[i]; });
+    by_boundary_proj_ = sorted(n, [&](std::uint32_t i) { return f_.boundary_proj[i]; });
+    by_boundary_angle_ = sorted(n, [&](std::uint32_t i) { return -f_.boundary_angle[i]; });
+    by_marking_proj_ = sorted(2 * n, [&](std::uint32_t e) { return f_.marking_proj[e & 1][e >> 1]; });
+    by_marking_angle_ = sorted(2 * n, [&](std::uint32_t e) { return -f_.marking_angle[e & 1][e >> 1]; });
+  }
 
   double score(const Thresholds& t) const {
     return p_.objective.score(target_counts(f_.count(t.boundary.thresholds, t.marking.thresholds), p_.target));
@@ -116,6 +131,8 @@ class Polisher {
     };
     std::vector<Item> items;
     items.reserve(n);
+    std::vector<float> keys(n, NAN);
+    std::vector<Label> ins(n), outs(n);
     Counts base{};
     base.marking.fn = f_.positives_marking;
     base.boundary.fn = f_.positives_boundary;
@@ -159,9 +176,26 @@ class Polisher {
         }
       }
       tally_signed(base, f_.truth[i], out, +1);
-      if (!std::isnan(key)) items.push_back({key, in, out, f_.truth[i]});
+      keys[i] = key, ins[i] = in, outs[i] = out;
     }
-    std::sort(items.begin(), items.end(), [](const Item& a, const Item& c) { return a.key > c.key; });
+    // Emit the segments in descending key order by walking the matching presorted order; a
+    // segment's key is the value of its first qualifying entry there.
+    const bool tuples = !d.boundary && d.which != Which::Length;
+    const std::vector<std::uint32_t>& order =
+        d.which == Which::Length ? by_length_
+        : d.boundary             ? (d.which == Which::Projection ? by_boundary_proj_ : by_boundary_angle_)
+                                 : (d.which == Which::Projection ? by_marking_proj_ : by_marking_angle_);
+    std::vector<char> emitted(n, 0);
+    for (const std::uint32_t e : order) {
+      const std::uint32_t i = tuples ? e >> 1 : e;
+      if (emitted[i] || std::isnan(keys[i])) continue;
+      const float v = !tuples ? keys[i]
+                      : d.which == Which::Projection ? f_.marking_proj[e & 1][i]
+                                                     : -f_.marking_angle[e & 1][i];
+      if (v != keys[i]) continue;  // the other, non-qualifying test of this segment
+      emitted[i] = 1;
+      items.push_back({keys[i], ins[i], outs[i], f_.truth[i]});
+    }
     Sweep s;
     s.negated = negated;
     const float lo = negated ? -d.range.hi : d.range.lo;
@@ -210,6 +244,7 @@ class Polisher {
   const FeatureTable& f_;
   const TrainParams& p_;
   std::vector<Dim> dims_;
+  std::vector<std::uint32_t> by_length_, by_boundary_proj_, by_boundary_angle_, by_marking_proj_, by_marking_angle_;
 };
 
 }  // namespace
