@@ -40,7 +40,6 @@ bool wants_ground_truth(const Args& args) {
 
 int cmd_eval(const Args& args) {
   if (wants_ground_truth(args)) {
-    if (&cmd_eval_gt == nullptr) throw Error("--gt: ground-truth evaluation is not built into this fieldlines");
     return cmd_eval_gt(args);
   }
   const ParsedArgs a(args, {"--thresholds", "--json"}, {"--per-image", "-h", "--help"});

@@ -13,7 +13,7 @@ struct SynthSetImage {
 // The images directly in `dir` (file-name order) that have DIR/truth/<name>.json.
 // Throws fieldlines::Error when `dir` is not a folder or holds no image with ground truth.
 // Defined in cmd_eval_gt.cpp: using it from autolabel also keeps `eval --gt` linked into the
-// CLI, which commands.hpp only references weakly.
+// CLI.
 std::vector<SynthSetImage> list_synth_set(const std::filesystem::path& dir);
 
 }  // namespace fieldlines::cli

@@ -148,8 +148,7 @@ void Project::save(const std::filesystem::path& file) const {
   }
   json j = {{"format", "fieldlines-project"}, {"version", kProjectVersion}};
   j["detector"] = detector_params_to_json(detector);
-  const json t = thresholds_to_json(thresholds);
-  for (const auto& [k, v] : t.items()) j[k] = v;
+  j.update(thresholds_to_json(thresholds));
   j["segment_columns"] = kColumns;
   json images_json = json::array();
   for (const ImageEntry& e : images) {

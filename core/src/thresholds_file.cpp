@@ -11,8 +11,7 @@ using nlohmann::json;
 json to_json(const ThresholdsFile& f) {
   json j = {{"format", "fieldlines-thresholds"}, {"version", kThresholdsFileVersion}};
   j["detector"] = detector_params_to_json(f.detector);
-  const json t = thresholds_to_json(f.thresholds);
-  for (const auto& [k, v] : t.items()) j[k] = v;
+  j.update(thresholds_to_json(f.thresholds));
   j["provenance"] = f.provenance.is_null() ? json::object() : f.provenance;
   return j;
 }

@@ -1,0 +1,47 @@
+// A saved project loads back with the same thresholds, detector parameters and labels, and a
+// project made by `autolabel` trains (regression: thresholds were once saved as nulls).
+#include <gtest/gtest.h>
+
+#include "cli_test_support.hpp"
+#include "fieldlines/dataset.hpp"
+
+namespace fieldlines::test {
+namespace {
+
+class ProjectRoundTrip : public TempDirTest {};
+
+TEST_F(ProjectRoundTrip, SaveThenLoadKeepsEverything) {
+  Project p;
+  p.detector.scan_interval = 4;
+  p.thresholds.marking.thresholds = {40, 25, 80};
+  p.thresholds.mode = GradientMode::Normal;
+  ImageEntry e;
+  e.path = "frames/a.png";
+  e.segments.push_back({1, 2, 3, 4, 50, {1, 2, 3}, {4, 5, 6}, Label::Marking});
+  e.segments.push_back({5, 6, 7, 8, 60, {0, 0, 0}, {9, 9, 9}, Label::Unlabelled});
+  p.images.push_back(e);
+  const auto file = dir_ / "project.json";
+  p.save(file);
+  const Project q = Project::load(file);
+  EXPECT_EQ(q.thresholds, p.thresholds);
+  EXPECT_EQ(q.detector, p.detector);
+  ASSERT_EQ(q.images.size(), 1u);
+  ASSERT_EQ(q.images[0].segments.size(), 2u);
+  EXPECT_EQ(q.images[0].segments[0].label, Label::Marking);
+  EXPECT_EQ(q.images[0].segments[1].label, Label::Unlabelled);
+  EXPECT_EQ(q.labelled_count(), 1u);
+  q.save(file);  // a loaded project can be saved over itself
+}
+
+TEST_F(ProjectRoundTrip, AutolabelledProjectTrains) {
+  ASSERT_EQ(run_cli({"synth", "--scene", "ssl", "--n", "3", "--seed", "5", "-o", (dir_ / "set").string()}, dir_).exit_code, 0);
+  const CliRun label = run_cli({"autolabel", (dir_ / "set").string()}, dir_);
+  ASSERT_EQ(label.exit_code, 0) << label.err;
+  const CliRun train = run_cli({"train", (dir_ / "set" / "project.json").string(), "--iterations", "5", "--particles",
+                                "10", "-o", (dir_ / "t.json").string()}, dir_);
+  EXPECT_EQ(train.exit_code, 0) << train.err;
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "t.json"));
+}
+
+}  // namespace
+}  // namespace fieldlines::test
