@@ -37,10 +37,13 @@ cv::VideoCapture open_source(const std::string& source) {
     std::error_code ec;
     if (source.find("://") == std::string::npos && !std::filesystem::is_regular_file(source, ec))
       throw Error("--video " + source + ": no such file");
-    // OpenCV's backends log their own failed attempts; our message below says what matters.
+    // FFmpeg reads nearly every file and stream; OpenCV's own MJPEG reader needs no codec
+    // library. Probing every backend (GStreamer, Aravis...) only adds noise and leaks on junk.
+    // Failed attempts log their own messages; ours below says what matters.
     const auto level = cv::utils::logging::getLogLevel();
     cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
-    capture.open(source);
+    for (const int backend : {cv::CAP_FFMPEG, cv::CAP_OPENCV_MJPEG})
+      if (capture.open(source, backend)) break;
     cv::utils::logging::setLogLevel(level);
   }
   if (!capture.isOpened()) throw Error("--video " + source + ": cannot open (missing file, not a video, or no such camera)");
