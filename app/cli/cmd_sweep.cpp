@@ -25,11 +25,11 @@ reference CSV) into train and test, train, and measure the test precision and re
 trained class. Prints the median over seeds per fraction and file (the paper's Table 3).
 
 options:
-  --fractions LIST  comma-separated training fractions in (0, 1) (default 0.1,0.2,...,0.7)
-  --seeds N         seeds per fraction (default 10)
-  --split S         row (default, the paper's) or image
-  --json OUT        write [{"file", "fraction", "precision", "recall"}] (medians) to OUT
-  --quiet           no progress on stderr
+  --fractions LIST     comma-separated training fractions in (0, 1) (default 0.1,0.2,...,0.7)
+  --seeds N            seeds per fraction (default 10)
+  --split S            row (default, the paper's) or image
+  --json OUT           write [{"file", "fraction", "precision", "recall"}] (medians) to OUT
+  --quiet              no progress on stderr
 )";
 
 std::vector<double> parse_fractions(const std::string& text) {

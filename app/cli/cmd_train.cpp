@@ -55,7 +55,7 @@ int cmd_train(const Args& args) {
   values.insert({"-o", "--output", "--split", "--train-fraction", "--seed"});
   const ParsedArgs a(args, values, {"-h", "--help", "--quiet"});
   if (a.flag("-h") || a.flag("--help")) {
-    std::printf("%s%s  --quiet           no progress on stderr\n", kHelp, kTrainingOptionsHelp);
+    std::printf("%s%s  --quiet              no progress on stderr\n", kHelp, kTrainingOptionsHelp);
     return 0;
   }
   const auto output = a.has("-o") ? a.value("-o") : a.value("--output");

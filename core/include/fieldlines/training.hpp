@@ -60,6 +60,8 @@ struct TrainParams {
   int threads = 1;        // workers scoring the swarm (1 = the calling thread only)
 };
 
+// Passed to the callback after every PSO iteration; the spans are only valid during the call
+// (copy what you keep, e.g. to hand to a UI thread).
 struct TrainingProgress {
   int iteration = 0, iterations = 0;
   double best_score = 0;
