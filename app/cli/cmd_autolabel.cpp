@@ -38,7 +38,7 @@ options:
   --quiet               no summary on stdout
   -h, --help            this help
 
-example:
+examples:
   fieldlines synth --scene ssl --n 40 --seed 1 -o train && fieldlines autolabel train
   fieldlines train train/project.json -o thresholds.json
 )";

@@ -28,6 +28,11 @@ options:
                      `fieldlines eval --gt --help`)
   -h, --help         this help
 Exit codes: 0 ok, 2 usage or fatal error (a malformed DATA row names its file and line).
+
+examples:
+  fieldlines eval labels/project.json --thresholds robot.json
+  fieldlines eval D2_ssl_mixed_light.csv D3_ssl_artificial_light.csv --thresholds t.json --per-image
+  fieldlines eval --gt synth/ssl_test --thresholds robot.json
 )";
 
 bool wants_ground_truth(const Args& args) {

@@ -48,7 +48,11 @@ int cmd_sweep(const Args& args) {
   values.insert({"--fractions", "--seeds", "--split", "--json"});
   const ParsedArgs a(args, values, {"-h", "--help", "--quiet"});
   if (a.flag("-h") || a.flag("--help")) {
-    std::printf("%s%s", kHelp, kTrainingOptionsHelp);
+    std::printf("%s%s%s", kHelp, kTrainingOptionsHelp, R"(
+examples:
+  fieldlines sweep D1_ssl_natural_light.csv --protocol paper
+  fieldlines sweep D1_ssl_natural_light.csv D4_humanoid_kid.csv --fractions 0.2,0.4 --seeds 5 --json table3.json
+)");
     return 0;
   }
   if (a.positionals().empty()) throw Error("no DATA given (see --help)");

@@ -33,6 +33,14 @@ options:
   --seed S             seed of the split and of PSO (default 1)
 )";
 
+constexpr const char* kExamples = R"(
+examples:
+  fieldlines train labels/project.json -o robot.json
+  fieldlines train D1_ssl_natural_light.csv --split row --train-fraction 0.4 --seed 3 -o t.json
+  fieldlines train a.csv b.csv --class both --objective fbeta:0.5 -o both.json
+  fieldlines train field.csv --protocol paper --train-fraction 1 -o paper.json
+)";
+
 std::string utc_now() {
   const std::time_t t = std::time(nullptr);
   std::tm tm{};
@@ -55,7 +63,7 @@ int cmd_train(const Args& args) {
   values.insert({"-o", "--output", "--split", "--train-fraction", "--seed"});
   const ParsedArgs a(args, values, {"-h", "--help", "--quiet"});
   if (a.flag("-h") || a.flag("--help")) {
-    std::printf("%s%s  --quiet              no progress on stderr\n", kHelp, kTrainingOptionsHelp);
+    std::printf("%s%s  --quiet              no progress on stderr\n%s", kHelp, kTrainingOptionsHelp, kExamples);
     return 0;
   }
   const auto output = a.has("-o") ? a.value("-o") : a.value("--output");

@@ -28,6 +28,15 @@ void print_usage(std::FILE* to) {
   std::fprintf(to, "usage: fieldlines <command> [options]   (fieldlines <command> --help)\n\ncommands:\n");
   for (const auto& c : kCommands)
     std::fprintf(to, "  %-10s %s\n", std::string(c.name).c_str(), std::string(c.summary).c_str());
+  std::fprintf(to, R"(
+  --version  print the version;  --help  this list
+
+examples:
+  fieldlines detect --draw overlays/ frames/
+  fieldlines train labels/project.json -o robot.json
+  fieldlines detect --thresholds robot.json --video /dev/video0
+  fieldlines synth --demo
+)");
 }
 
 }  // namespace
