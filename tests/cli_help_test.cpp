@@ -17,6 +17,12 @@ TEST_F(CliHelp, EveryCommandHasHelpWithExamples) {
   }
 }
 
+TEST_F(CliHelp, EvalGroundTruthHasItsOwnHelp) {
+  const CliRun r = run_cli({"eval", "--gt", "--help"}, dir_);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("examples:"), std::string::npos) << r.out;
+}
+
 TEST_F(CliHelp, TopLevelHelpVersionAndUnknownCommand) {
   CliRun r = run_cli({"--help"}, dir_);
   EXPECT_EQ(r.exit_code, 0);

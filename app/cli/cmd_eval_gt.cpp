@@ -45,6 +45,10 @@ options:
   --json OUT         write the scores as JSON (per group and total)
   -h, --help         this help
 Exit codes: 0 ok, 1 some images could not be read (they are skipped), 2 usage or fatal error.
+
+examples:
+  fieldlines eval --gt synth/ssl_test
+  fieldlines eval --gt synth/ssl_test synth/kid_test --thresholds robot.json --markdown
 )";
 
 struct Group {
@@ -104,12 +108,14 @@ std::vector<SynthSetImage> list_synth_set(const fs::path& dir) {
 }
 
 int cmd_eval_gt(const Args& args) {
-  const ParsedArgs a(args, {"--gt", "--thresholds", "--max-distance", "--min-width", "--json"},
-                     {"--markdown", "-h", "--help"});
-  if (a.flag("-h") || a.flag("--help")) {
-    std::fputs(kHelp, stdout);
-    return 0;
+  // Help first: in `eval --gt --help` the parser would take --help as the DIR.
+  for (const std::string& arg : args) {
+    if (arg == "-h" || arg == "--help") {
+      std::fputs(kHelp, stdout);
+      return 0;
+    }
   }
+  const ParsedArgs a(args, {"--gt", "--thresholds", "--max-distance", "--min-width", "--json"}, {"--markdown"});
   std::vector<fs::path> dirs;
   if (const auto gt = a.value("--gt")) dirs.emplace_back(*gt);
   for (const std::string& p : a.positionals()) dirs.emplace_back(p);
