@@ -42,6 +42,12 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
   auto fld_state = std::make_shared<GreyLines>();
   out.push_back({"fld", "OpenCV ximgproc FastLineDetector", [fld, fld_state](const cv::Mat& bgr) {
                    cv::cvtColor(bgr, fld_state->grey, cv::COLOR_BGR2GRAY);
+                   // OpenCV 4.6's FLD asserts (cv::Exception) on images with a side under 6 px;
+                   // such a frame has no lines for any detector, so report none.
+                   if (bgr.cols < 6 || bgr.rows < 6) {
+                     fld_state->lines.clear();
+                     return std::size_t{0};
+                   }
                    fld->detect(fld_state->grey, fld_state->lines);
                    return fld_state->lines.size();
                  }});
