@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "bench_scene.hpp"
+#include "demo_project.hpp"
 #include "fieldlines/atomic_file.hpp"
 #include "fieldlines/error.hpp"
 #include "frame_stats.hpp"
@@ -125,8 +126,14 @@ int run(const studio::StudioArgs& args) {
   } else {
     std::string input = args.input;
     if (input.empty()) {
-      if (recent.empty()) throw Error(std::string("no project given and none opened before\n") + studio::studio_usage());
-      input = recent.front();
+      // The most recent project that still exists, else the demo.
+      for (const auto& r : recent) {
+        if (std::filesystem::exists(r)) {
+          input = r;
+          break;
+        }
+      }
+      if (input.empty()) input = studio::ensure_demo_images(studio::default_demo_folder()).string();
     }
     auto opened = studio::open_project(input);
     project = std::move(opened.project);

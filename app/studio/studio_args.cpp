@@ -22,7 +22,7 @@ const char* studio_usage() {
   return "usage: fieldlines-studio [PROJECT.json | IMAGE_FOLDER] [--window-size WxH] [--bench-frames N]\n"
          "  PROJECT.json     a studio project (labels are autosaved into it)\n"
          "  IMAGE_FOLDER     images to label; creates IMAGE_FOLDER/fieldlines-project.json\n"
-         "  (nothing)        reopens the most recent project\n"
+         "  (nothing)        reopens the most recent project, else the demo (synthetic pictures)\n"
          "  --window-size    initial window size, default 1280x800\n"
          "  --bench-frames N render N frames as fast as possible, print the median frame time, exit\n"
          "                   (without a project: a 640x480 image with 300 segments)\n"

@@ -8,6 +8,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -22,6 +24,7 @@
 
 #include "fieldlines/atomic_file.hpp"
 #include "fieldlines/dataset.hpp"
+#include "fieldlines/synth.hpp"
 #include "fixtures.hpp"
 #include "hit_test.hpp"
 #include "overlay_style.hpp"
@@ -112,20 +115,23 @@ struct Display {
   std::unique_ptr<Child> server;
 };
 
-// Starts Xvfb on the first free display number from :91, with a 24-bit 1280x800 screen.
+// Starts Xvfb with a 24-bit 1280x800 screen on a display number it picks itself (-displayfd),
+// so parallel test runs never share a display.
 Display start_xvfb(const fs::path& log) {
-  for (int n = 91; n < 140; ++n) {
-    if (fs::exists("/tmp/.X" + std::to_string(n) + "-lock") || fs::exists("/tmp/.X11-unix/X" + std::to_string(n))) {
-      continue;
-    }
-    Display d{":" + std::to_string(n), nullptr};
-    d.server = std::make_unique<Child>(
-        std::vector<std::string>{"/usr/bin/Xvfb", d.name, "-screen", "0",
-                                 std::to_string(kWidth) + "x" + std::to_string(kHeight) + "x24", "-nolisten", "tcp"},
-        std::vector<std::string>{}, log);
-    if (wait_for([&] { return fs::exists("/tmp/.X11-unix/X" + std::to_string(n)); }, 10s)) return d;
-  }
-  return {};
+  int fds[2];
+  if (::pipe(fds) != 0) return {};
+  Display d;
+  d.server = std::make_unique<Child>(
+      std::vector<std::string>{"/usr/bin/Xvfb", "-displayfd", std::to_string(fds[1]), "-screen", "0",
+                               std::to_string(kWidth) + "x" + std::to_string(kHeight) + "x24", "-nolisten", "tcp"},
+      std::vector<std::string>{}, log);
+  ::close(fds[1]);
+  std::string number;
+  char c = 0;
+  while (::read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+  ::close(fds[0]);
+  if (!number.empty()) d.name = ":" + number;
+  return d;
 }
 
 class StudioWindow : public ::testing::Test {
@@ -295,21 +301,40 @@ TEST_F(StudioWindow, LabelByMouseAndKeysUndoRedoAndSurviveSigkill) {
   EXPECT_EQ(reopened.images[0].segments[6].label, Label::Marking);
 }
 
-TEST_F(StudioWindow, PanelScreenshots) {
+TEST_F(StudioWindow, PanelScreenshotsOnDetectedSyntheticPictures) {
+  // A folder of synthetic field pictures: the studio creates the project and detects in the
+  // background; the screenshots for the docs show real detections.
+  const fs::path folder = dir_.path() / "pictures";
+  fs::create_directories(folder);
+  fieldlines::synth::SynthParams params;
+  for (int i = 0; i < 5; ++i) fieldlines::synth::write_sample(fieldlines::synth::generate(params, 11, i), folder);
+  project_ = folder;
   auto studio = start_studio();
   ASSERT_TRUE(studio->running()) << log();
-  // Some labels so the panels have something to show: a marking, then the rest as none.
+  const fs::path file = folder / "fieldlines-project.json";
+  ASSERT_TRUE(wait_for([&] {
+    try {
+      const auto p = fieldlines::Project::load(file);
+      return std::all_of(p.images.begin(), p.images.end(), [](const auto& e) { return e.detect_ms > 0; });
+    } catch (const std::exception&) {
+      return false;
+    }
+  }, 60s)) << log();
+  segments_ = fieldlines::Project::load(file).images[0].segments;
+  ASSERT_GE(segments_.size(), 4u);
+
+  // A few labels so the panels have something to show.
   hover(0);
-  act_and_wait_for_save("key m");
-  hover(2);
   act_and_wait_for_save("key m");
   hover(1);
   act_and_wait_for_save("key b");
-  hover(5);  // leaves a highlighted segment with its tooltip in the Label screenshot
+  hover(2);
+  act_and_wait_for_save("key n");
+  hover(3);  // leaves a highlighted segment with its tooltip in the Label screenshot
 
   const fs::path docs = FIELDLINES_SCREENSHOT_DIR;
   fs::create_directories(docs);
-  const char* panels[] = {"images", "label", "thresholds", "train", "metrics", "export"};
+  const char* panels[] = {"Images", "Label", "Thresholds", "Train", "Metrics", "Export"};
   for (int i = 0; i < 6; ++i) {
     if (i == 3) {
       // Train: start a run with Ctrl+T and capture once it has finished.
@@ -318,13 +343,13 @@ TEST_F(StudioWindow, PanelScreenshots) {
     } else {
       ASSERT_EQ(run(x("key F" + std::to_string(i + 1))), 0);
     }
-    ASSERT_TRUE(wait_for([&] { return read_state(state_)["panel"] == std::string(panels[i]).replace(0, 1, 1,
-                                                     static_cast<char>(std::toupper(panels[i][0]))); }, 10s))
-        << panels[i];
+    ASSERT_TRUE(wait_for([&] { return read_state(state_)["panel"] == panels[i]; }, 10s)) << panels[i];
     std::this_thread::sleep_for(400ms);
     const fs::path shot = screenshot(panels[i]);
     const cv::Mat image = cv::imread(shot.string());
     ASSERT_EQ(image.cols, kWidth);
-    fs::copy_file(shot, docs / (std::string("studio-") + panels[i] + ".png"), fs::copy_options::overwrite_existing);
+    std::string name = panels[i];
+    name[0] = static_cast<char>(std::tolower(name[0]));
+    fs::copy_file(shot, docs / ("studio-" + name + ".png"), fs::copy_options::overwrite_existing);
   }
 }

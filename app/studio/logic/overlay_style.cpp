@@ -8,7 +8,7 @@ namespace {
 constexpr Rgba kMarking{255, 40, 200, 255};    // magenta
 constexpr Rgba kBoundary{30, 120, 255, 255};   // blue
 constexpr Rgba kNone{255, 210, 0, 255};        // yellow
-constexpr Rgba kUnlabelled{150, 150, 150, 255};// grey
+constexpr Rgba kUnlabelled{0, 230, 230, 255};   // cyan: still to do, must stand out
 constexpr Rgba kNegative{150, 150, 150, 160};  // translucent grey: agreed "not a feature"
 
 constexpr std::array kLabelLegend{
@@ -53,7 +53,7 @@ Rgba label_colour(Label label) {
 SegmentStyle style_for(OverlayMode mode, Label truth, Label predicted) {
   switch (mode) {
     case OverlayMode::Labels:
-      return {label_colour(truth), Stroke::Solid, truth == Label::Unlabelled ? 1.0f : 2.0f};
+      return {label_colour(truth), Stroke::Solid, truth == Label::Unlabelled ? 1.5f : 2.0f};
     case OverlayMode::Prediction:
       return {label_colour(predicted), Stroke::Solid, predicted == Label::None ? 1.0f : 2.0f};
     case OverlayMode::Agreement:
