@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 
 #include "args.hpp"
 #include "commands.hpp"
@@ -11,6 +12,7 @@
 #include "fieldlines/thresholds_file.hpp"
 #include "fieldlines/training.hpp"
 #include "labelled_data.hpp"
+#include "output_file.hpp"
 #include "progress.hpp"
 #include "training_options.hpp"
 #include "training_report.hpp"
@@ -69,6 +71,17 @@ int cmd_train(const Args& args) {
   const auto output = a.has("-o") ? a.value("-o") : a.value("--output");
   if (!output) throw Error("missing -o FILE (see --help)");
   if (a.positionals().empty()) throw Error("no DATA given (see --help)");
+  // Checked before a possibly long training: the folder must exist, and an existing file is only
+  // replaced when it is a thresholds file (never the labels: `-o project.json` would lose them).
+  check_output_path("-o", *output);
+  if (std::filesystem::exists(*output)) {
+    try {
+      (void)load_thresholds_file(*output);
+    } catch (const Error& e) {
+      throw Error(std::string("refusing to overwrite -o ") + output->c_str() + ", it is not a thresholds file we can read (" +
+                  e.what() + ")");
+    }
+  }
 
   std::vector<LoadedData> data;
   for (const std::string& p : a.positionals()) data.push_back(load_labelled_data(p));
