@@ -83,7 +83,7 @@ TEST_F(BadOutputs, DetectDrawUnderAFile) {
   EXPECT_CLI_FAILS(r, 2, "--draw " + under_file("overlays").string(), "cannot create the folder");
 }
 TEST_F(BadOutputs, BenchJsonUnderAFile) { expect_unwritable("bench", {"--json", "does not exist"}); }
-TEST_F(BadOutputs, TrainOutputUnderAFile) { expect_unwritable("train", {"cannot save"}); }
+TEST_F(BadOutputs, TrainOutputUnderAFile) { expect_unwritable("train", {"-o", "does not exist"}); }
 TEST_F(BadOutputs, EvalJsonUnderAFile) { expect_unwritable("eval", {"cannot save"}); }
 TEST_F(BadOutputs, SweepJsonUnderAFile) { expect_unwritable("sweep", {"cannot save"}); }
 TEST_F(BadOutputs, AutolabelProjectUnderAFile) { expect_unwritable("autolabel", {"cannot save"}); }
@@ -95,6 +95,20 @@ TEST_F(BadOutputs, SynthFolderUnderAFile) {
 TEST_F(BadOutputs, TrainOutputUnderProc) {
   const CliRun r = run(command("train", "/proc/fieldlines_thresholds.json"));
   EXPECT_CLI_FAILS(r, 2, "cannot save '/proc/fieldlines_thresholds.json'");
+}
+
+TEST_F(BadOutputs, TrainRefusesToReplaceAFileThatIsNotThresholds) {
+  // `train labels.json -o labels.json` must not turn hours of labels into a thresholds file.
+  const fs::path labels = project("labels.json");
+  const std::string before = read_text(labels);
+  const CliRun r = run({"train", labels.string(), "--quiet", "--iterations", "5", "-o", labels.string()});
+  EXPECT_CLI_FAILS(r, 2, "refusing to overwrite -o " + labels.string(), "not a fieldlines thresholds file");
+  EXPECT_EQ(read_text(labels), before);
+  // A thresholds file, even one from an older run, is replaced as asked.
+  const fs::path old = thresholds("old.json");
+  const CliRun ok = run({"train", labels.string(), "--quiet", "--iterations", "5", "-o", old.string()});
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_NE(read_text(old), read_text(thresholds("defaults.json")));
 }
 
 // ---- full disk ------------------------------------------------------------------------------
