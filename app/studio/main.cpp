@@ -22,6 +22,7 @@
 #include "frame_stats.hpp"
 #include "open_project.hpp"
 #include "recent_projects.hpp"
+#include "video_frames.hpp"
 #include "studio_args.hpp"
 #include "studio_controller.hpp"
 #include "studio_ui.hpp"
@@ -109,8 +110,54 @@ class StateWriter {
   std::string last_;
 };
 
+// Extracts every n-th frame of a video into a folder while showing a progress bar; returns the
+// folder to open. Throws fieldlines::Error when the video cannot be read; an existing frames
+// folder is reused as it is.
+std::filesystem::path frames_of_video(GLFWwindow* window, const std::filesystem::path& video, int every) {
+  const auto folder = studio::frames_folder_for(video);
+  if (std::filesystem::exists(folder)) return folder;
+  studio::VideoFramesJob job;
+  job.start(video, folder, {every});
+  while (!job.finished()) {
+    if (glfwWindowShouldClose(window)) {
+      job.cancel();
+      job.wait();
+      throw Error("cancelled while reading " + video.string());
+    }
+    glfwPollEvents();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos({vp->WorkPos.x + vp->WorkSize.x / 2, vp->WorkPos.y + vp->WorkSize.y / 2}, 0, {0.5f, 0.5f});
+    ImGui::SetNextWindowSize({480, 0});
+    ImGui::Begin("Reading video", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::TextWrapped("%s: keeping every %d-th frame", video.string().c_str(), every);
+    ImGui::ProgressBar(job.progress(), {-1, 0});
+    ImGui::Text("%d frames written", job.written());
+    if (ImGui::Button("Cancel")) glfwSetWindowShouldClose(window, GLFW_TRUE);
+    ImGui::End();
+    ImGui::Render();
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window, &width, &height);
+    glViewport(0, 0, width, height);
+    glClearColor(0.1f, 0.1f, 0.11f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    glfwSwapBuffers(window);
+  }
+  job.wait();
+  if (!job.error().empty()) {
+    std::error_code ec;
+    std::filesystem::remove_all(folder, ec);  // a half-written folder must not be reused
+    throw Error(job.error());
+  }
+  return folder;
+}
+
 int run(const studio::StudioArgs& args) {
   const bool bench = args.bench_frames > 0;
+  Window window(args.window_width, args.window_height, !bench);
   const auto recent_file = studio::default_recent_file();
   std::vector<std::string> recent = bench ? std::vector<std::string>{} : studio::load_recent(recent_file);
 
@@ -135,6 +182,9 @@ int run(const studio::StudioArgs& args) {
       }
       if (input.empty()) input = studio::ensure_demo_images(studio::default_demo_folder()).string();
     }
+    if (studio::has_video_extension(input) && std::filesystem::is_regular_file(input)) {
+      input = frames_of_video(window.get(), input, args.video_every).string();
+    }
     auto opened = studio::open_project(input);
     project = std::move(opened.project);
     project_file = opened.file;
@@ -146,7 +196,6 @@ int run(const studio::StudioArgs& args) {
   }
   if (bench) options.autosave = false;
 
-  Window window(args.window_width, args.window_height, !bench);
   studio::StudioController controller(std::move(project), project_file, options);
   if (needs_detection) controller.detect_all(true);
   studio::FrameStats frame_stats(bench ? static_cast<std::size_t>(args.bench_frames) : 240);

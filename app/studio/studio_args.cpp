@@ -19,9 +19,12 @@ int parse_int(const std::string& text, const std::string& option, int lo, int hi
 }  // namespace
 
 const char* studio_usage() {
-  return "usage: fieldlines-studio [PROJECT.json | IMAGE_FOLDER] [--window-size WxH] [--bench-frames N]\n"
+  return "usage: fieldlines-studio [PROJECT.json | IMAGE_FOLDER | VIDEO] [--every N] [--window-size WxH]\n"
+         "                         [--bench-frames N]\n"
          "  PROJECT.json     a studio project (labels are autosaved into it)\n"
          "  IMAGE_FOLDER     images to label; creates IMAGE_FOLDER/fieldlines-project.json\n"
+         "  VIDEO            mp4/avi/mkv/mov/webm: every N-th frame (--every, default 10) goes to\n"
+         "                   VIDEO_STEM-frames/ next to it, which then opens as an image folder\n"
          "  (nothing)        reopens the most recent project, else the demo (synthetic pictures)\n"
          "  --window-size    initial window size, default 1280x800\n"
          "  --bench-frames N render N frames as fast as possible, print the median frame time, exit\n"
@@ -48,6 +51,8 @@ StudioArgs parse_studio_args(const std::vector<std::string>& args) {
       if (x == std::string::npos) throw Error(a + ": expected WIDTHxHEIGHT, got '" + v + "'");
       out.window_width = parse_int(v.substr(0, x), a, 200, 16384);
       out.window_height = parse_int(v.substr(x + 1), a, 200, 16384);
+    } else if (a == "--every") {
+      out.video_every = parse_int(value(), a, 1, 100000);
     } else if (a == "--state-file") {
       out.state_file = value();
     } else if (!a.empty() && a[0] == '-') {

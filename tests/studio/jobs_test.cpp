@@ -9,12 +9,15 @@
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
 
+#include "fieldlines/atomic_file.hpp"
 #include "fieldlines/dataset.hpp"
 #include "fixtures.hpp"
 #include "message_queue.hpp"
 #include "studio_controller.hpp"
 #include "training_job.hpp"
+#include "video_frames.hpp"
 
 namespace fs = fieldlines::studio;
 using fieldlines::Label;
@@ -191,4 +194,47 @@ TEST(DetectionJob, DetectsAFolderProjectInTheBackgroundAndKeepsLabels) {
   }
   EXPECT_GE(marked, 1u);
   EXPECT_FALSE(c.can_undo());  // segment indices changed: history cleared
+}
+
+TEST(VideoFramesJob, KeepsEveryNthFrameAsPng) {
+  studio_test::TempDir dir("video");
+  const auto video = dir.path() / "match.avi";
+  {
+    cv::VideoWriter writer(video.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25, {160, 120});
+    ASSERT_TRUE(writer.isOpened());
+    for (int i = 0; i < 25; ++i) {
+      fieldlines::Segment s;
+      s.x0 = 10, s.y0 = static_cast<float>(10 + 4 * i), s.x1 = 150, s.y1 = s.y0;
+      writer.write(studio_test::field_image(160, 120, {s}));
+    }
+  }
+  EXPECT_TRUE(fs::has_video_extension(video));
+  EXPECT_TRUE(fs::has_video_extension("A.MP4"));
+  EXPECT_FALSE(fs::has_video_extension("a.png"));
+  const auto folder = fs::frames_folder_for(video);
+  EXPECT_EQ(folder, dir.path() / "match-frames");
+  fs::VideoFramesJob job;
+  job.start(video, folder, {10});
+  job.wait();
+  ASSERT_TRUE(job.finished());
+  EXPECT_TRUE(job.error().empty()) << job.error();
+  EXPECT_EQ(job.written(), 3);  // frames 0, 10, 20
+  EXPECT_FLOAT_EQ(job.progress(), 1);
+  for (const char* name : {"frame_000000.png", "frame_000010.png", "frame_000020.png"}) {
+    const cv::Mat frame = cv::imread((folder / name).string());
+    EXPECT_EQ(frame.cols, 160) << name;
+  }
+  EXPECT_FALSE(std::filesystem::exists(folder / "frame_000001.png"));
+}
+
+TEST(VideoFramesJob, UnreadableVideoIsAnError) {
+  studio_test::TempDir dir("badvideo");
+  const auto video = dir.path() / "broken.mp4";
+  fieldlines::write_file_atomically(video, "not a video at all");
+  fs::VideoFramesJob job;
+  job.start(video, dir.path() / "frames", {5});
+  job.wait();
+  ASSERT_TRUE(job.finished());
+  EXPECT_FALSE(job.error().empty());
+  EXPECT_EQ(job.written(), 0);
 }
