@@ -8,6 +8,7 @@
 #include "fieldlines/metrics.hpp"
 #include "fieldlines/thresholds_file.hpp"
 #include "labelled_data.hpp"
+#include "output_file.hpp"
 #include "training_report.hpp"
 
 namespace fieldlines::cli {
@@ -55,6 +56,13 @@ int cmd_eval(const Args& args) {
   const auto thresholds_path = a.value("--thresholds");
   if (!thresholds_path) throw Error("missing --thresholds FILE (see --help)");
   if (a.positionals().empty()) throw Error("no DATA given (see --help)");
+  // Checked before the work, which can be long: an unwritable --json would only fail at the end.
+  if (const auto json_path = a.value("--json")) {
+    check_output_path("--json", *json_path);
+    std::vector<std::string> inputs = a.positionals();
+    inputs.push_back(*thresholds_path);
+    check_not_an_input("--json", *json_path, inputs);
+  }
   const ThresholdsFile file = load_thresholds_file(*thresholds_path);
 
   nlohmann::json out = {{"thresholds", *thresholds_path}, {"files", nlohmann::json::array()}};

@@ -12,6 +12,7 @@
 #include "fieldlines/error.hpp"
 #include "fieldlines/sweep.hpp"
 #include "labelled_data.hpp"
+#include "output_file.hpp"
 #include "progress.hpp"
 #include "training_options.hpp"
 
@@ -56,6 +57,11 @@ examples:
     return 0;
   }
   if (a.positionals().empty()) throw Error("no DATA given (see --help)");
+  // Checked before the work, which can be long: an unwritable --json would only fail at the end.
+  if (const auto json_path = a.value("--json")) {
+    check_output_path("--json", *json_path);
+    check_not_an_input("--json", *json_path, a.positionals());
+  }
   SweepParams sp;
   if (const auto v = a.value("--fractions")) sp.fractions = parse_fractions(*v);
   sp.seeds = a.int_or("--seeds", 10, 1, 100000);

@@ -22,4 +22,13 @@ void check_output_path(std::string_view option, const std::filesystem::path& pat
     throw Error(std::string(option) + " " + path.string() + ": is a folder, expected a file name");
 }
 
+void check_not_an_input(std::string_view option, const std::filesystem::path& path,
+                        const std::vector<std::string>& inputs) {
+  for (const std::string& input : inputs) {
+    std::error_code ec;
+    if (std::filesystem::equivalent(path, input, ec))
+      throw Error(std::string(option) + " " + path.string() + ": is also an input file, refusing to overwrite it");
+  }
+}
+
 }  // namespace fieldlines::cli
