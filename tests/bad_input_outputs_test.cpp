@@ -84,8 +84,8 @@ TEST_F(BadOutputs, DetectDrawUnderAFile) {
 }
 TEST_F(BadOutputs, BenchJsonUnderAFile) { expect_unwritable("bench", {"--json", "does not exist"}); }
 TEST_F(BadOutputs, TrainOutputUnderAFile) { expect_unwritable("train", {"-o", "does not exist"}); }
-TEST_F(BadOutputs, EvalJsonUnderAFile) { expect_unwritable("eval", {"cannot save"}); }
-TEST_F(BadOutputs, SweepJsonUnderAFile) { expect_unwritable("sweep", {"cannot save"}); }
+TEST_F(BadOutputs, EvalJsonUnderAFile) { expect_unwritable("eval", {"--json", "does not exist"}); }
+TEST_F(BadOutputs, SweepJsonUnderAFile) { expect_unwritable("sweep", {"--json", "does not exist"}); }
 TEST_F(BadOutputs, AutolabelProjectUnderAFile) { expect_unwritable("autolabel", {"cannot save"}); }
 TEST_F(BadOutputs, AutolabelCsvUnderAFile) { expect_unwritable("autolabel-csv", {"cannot save"}); }
 TEST_F(BadOutputs, SynthFolderUnderAFile) {
@@ -109,6 +109,21 @@ TEST_F(BadOutputs, TrainRefusesToReplaceAFileThatIsNotThresholds) {
   const CliRun ok = run({"train", labels.string(), "--quiet", "--iterations", "5", "-o", old.string()});
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_NE(read_text(old), read_text(thresholds("defaults.json")));
+}
+
+TEST_F(BadOutputs, EvalAndSweepRefuseToWriteOverTheirInputs) {
+  const fs::path data = csv("d.csv");
+  const fs::path t = thresholds("t.json");
+  const std::string data_before = read_text(data), t_before = read_text(t);
+  for (const fs::path& victim : {data, t}) {
+    const CliRun r = run({"eval", data.string(), "--thresholds", t.string(), "--json", victim.string()});
+    EXPECT_CLI_FAILS(r, 2, "--json " + victim.string(), "is also an input file");
+  }
+  const CliRun r = run({"sweep", data.string(), "--quiet", "--seeds", "1", "--fractions", "0.5", "--iterations", "5",
+                        "--json", (dir_ / "." / "d.csv").string()});
+  EXPECT_CLI_FAILS(r, 2, "is also an input file");
+  EXPECT_EQ(read_text(data), data_before);
+  EXPECT_EQ(read_text(t), t_before);
 }
 
 // ---- full disk ------------------------------------------------------------------------------
