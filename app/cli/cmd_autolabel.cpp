@@ -86,6 +86,9 @@ int cmd_autolabel(const Args& args) {
       ++failed;
     }
   }
+  // An all-failed run must not replace a previous project (labels included) with an empty one.
+  if (project.images.empty())
+    throw Error(dir.string() + ": no image could be labelled (see the messages above); " + out.string() + " not written");
   project.save(out);
   if (const auto csv = a.value("--csv")) write_reference_csv(*csv, rows);
   if (!a.flag("--quiet"))
