@@ -174,6 +174,16 @@ TEST_F(BadImages, AutolabelCorruptGroundTruthIsSkipped) {
   EXPECT_CLI_FAILS(r, 1, truth.filename().string());
 }
 
+TEST_F(BadImages, AutolabelWithEveryImageFailingKeepsThePreviousProject) {
+  const fs::path set = synth_set("set");
+  const fs::path previous = project("previous.json", 9);
+  const std::string before = read_text(previous);
+  for (const fs::path& img : set_images(set)) bytes(fs::relative(img, dir_).string(), "");
+  const auto r = run({"autolabel", set.string(), "--quiet", "-o", previous.string()});
+  EXPECT_CLI_FAILS(r, 2, "empty file", "no image could be labelled", previous.string() + " not written");
+  EXPECT_EQ(read_text(previous), before);
+}
+
 TEST_F(BadImages, AutolabelMissingSetFolder) {
   const auto r = run({"autolabel", path("nowhere").string(), "-o", path("p.json").string()});
   EXPECT_CLI_FAILS(r, 2, "nowhere");
