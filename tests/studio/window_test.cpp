@@ -255,6 +255,25 @@ TEST_F(StudioWindow, LabelByMouseAndKeysUndoRedoAndSurviveSigkill) {
   EXPECT_EQ(s[4].label, Label::None);
   for (std::size_t i = 5; i < s.size(); ++i) EXPECT_EQ(s[i].label, Label::Unlabelled) << i;
 
+
+  // Drag a rectangle across the row of segments 8 and 9: both get the brush label (marking).
+  {
+    const auto a = on_screen(8), b = on_screen(9);
+    ASSERT_EQ(run(x("mousemove " + std::to_string(a.first - 40) + " " + std::to_string(a.second - 10))), 0);
+    std::this_thread::sleep_for(150ms);
+    ASSERT_EQ(run(x("mousedown 1")), 0);
+    std::this_thread::sleep_for(150ms);
+    ASSERT_EQ(run(x("mousemove " + std::to_string((a.first + b.first) / 2) + " " + std::to_string(a.second))), 0);
+    std::this_thread::sleep_for(150ms);
+    act_and_wait_for_save("mousemove " + std::to_string(b.first + 40) + " " + std::to_string(b.second + 10) +
+                          " mouseup 1");
+    const auto r = fieldlines::Project::load(project_);
+    EXPECT_EQ(r.images[0].segments[8].label, Label::Marking);
+    EXPECT_EQ(r.images[0].segments[9].label, Label::Marking);
+    EXPECT_EQ(r.images[0].segments[10].label, Label::Unlabelled);
+    EXPECT_EQ(r.images[0].segments[7].label, Label::Unlabelled);
+  }
+
   // The screen shows the image (green field) and each label's overlay colour on its segment.
   ASSERT_EQ(run(x("mousemove 5 5")), 0);  // away from the segments: no highlight, no tooltip
   ASSERT_TRUE(wait_for([&] { return read_state(state_)["hovered"] == -1; }, 10s));
