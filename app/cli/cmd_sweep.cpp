@@ -70,7 +70,10 @@ examples:
     throw Error("--split: expected image or row, got '" + *v + "'");
 
   std::vector<LoadedData> data;
-  for (const std::string& p : a.positionals()) data.push_back(load_labelled_data(p));
+  for (const std::string& p : a.positionals()) {
+    data.push_back(load_labelled_data(p));
+    if (data.back().set.size() == 0) throw Error(p + ": holds no labelled segments to split");
+  }
   std::vector<std::vector<SweepCell>> results;
   {
     Progress progress("sweep", data.size() * sp.fractions.size() * static_cast<std::size_t>(sp.seeds), stderr,
