@@ -102,6 +102,19 @@ TEST_F(BadData, CsvDuplicateRowsAreKeptAndCountTwice) {
   EXPECT_EQ(total(jb), 2 * total(ja)) << jb;
 }
 
+TEST_F(BadData, CsvWithoutLabelledRows) {
+  // Header only: train and sweep have nothing to learn from and say which file; eval reports
+  // zero counts (exit 0).
+  const fs::path data = bytes("header_only.csv", kCsvHeader);
+  const auto t = run({"train", data.string(), "--quiet", "-o", path("out.json").string()});
+  EXPECT_CLI_FAILS(t, 2, "no labelled segments");
+  const auto s = run({"sweep", data.string(), "--quiet", "--seeds", "1"});
+  EXPECT_CLI_FAILS(s, 2, "header_only.csv: holds no labelled segments");
+  const auto e = run({"eval", data.string(), "--thresholds", thresholds("t.json").string()});
+  EXPECT_EQ(e.exit_code, 0) << e.err;
+  EXPECT_FALSE(fs::exists(path("out.json")));
+}
+
 // ---- project files: train, eval, sweep; autolabel never overwrites one it cannot read ----------
 
 TEST_F(BadData, ProjectMalformedJson) {
