@@ -65,6 +65,10 @@ void draw_status_bar(const studio::StudioController& controller, const UiState& 
               controller.image_count() ? controller.project().images[controller.current()].path.c_str() : "-",
               labelled, segments.size(), ui.image_view.view.scale() * 100,
               ui.frame_stats ? ui.frame_stats->median_ms() : 0.0);
+  if (!ui.status_message.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("  %s", ui.status_message.c_str());
+  }
   if (!controller.save_error().empty()) {
     ImGui::SameLine();
     ImGui::TextColored({1, 0.4f, 0.4f, 1}, "  autosave failed: %s", controller.save_error().c_str());

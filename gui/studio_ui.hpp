@@ -35,6 +35,8 @@ struct UiState {
   std::string export_message;
   std::string export_preview;
   std::vector<std::string> recent_projects;
+  std::string open_request;    // a project the user asked to open (the main loop swaps sessions)
+  std::string status_message;  // shown in the status bar
   const studio::FrameStats* frame_stats = nullptr;
   bool quit_requested = false;
 };

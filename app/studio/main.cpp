@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <GLFW/glfw3.h>
@@ -196,8 +197,9 @@ int run(const studio::StudioArgs& args) {
   }
   if (bench) options.autosave = false;
 
-  studio::StudioController controller(std::move(project), project_file, options);
-  if (needs_detection) controller.detect_all(true);
+  // Behind a pointer so that opening a recent project can replace the whole session.
+  auto session = std::make_unique<studio::StudioController>(std::move(project), project_file, options);
+  if (needs_detection) session->detect_all(true);
   studio::FrameStats frame_stats(bench ? static_cast<std::size_t>(args.bench_frames) : 240);
   gui::UiState ui;
   ui.frame_stats = &frame_stats;
@@ -210,6 +212,7 @@ int run(const studio::StudioArgs& args) {
   int frames = 0;
   int busy_frames = 0;  // keep rendering a few frames after any input so ImGui settles
   while (!glfwWindowShouldClose(window.get()) && !ui.quit_requested) {
+    studio::StudioController& controller = *session;
     const bool working = controller.training().running() || controller.detection().running();
     if (bench || working || busy_frames > 0) {
       glfwPollEvents();
@@ -237,6 +240,24 @@ int run(const studio::StudioArgs& args) {
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glfwSwapBuffers(window.get());
     state_writer.update(controller, ui);
+    if (!ui.open_request.empty()) {
+      const std::string request = std::exchange(ui.open_request, {});
+      try {
+        auto opened = studio::open_project(request);
+        controller.flush();
+        session.reset();  // joins its jobs before the new session starts
+        session = std::make_unique<studio::StudioController>(std::move(opened.project), opened.file, options);
+        if (opened.needs_detection) session->detect_all(true);
+        ui.image_view.texture_generation = static_cast<std::size_t>(-1);
+        ui.image_view.fit_requested = true;
+        studio::remember(recent, std::filesystem::absolute(opened.file).string());
+        studio::save_recent(recent_file, recent);
+        ui.recent_projects = recent;
+        ui.status_message = "opened " + opened.file.string();
+      } catch (const std::exception& e) {
+        ui.status_message = e.what();
+      }
+    }
 
     frame_stats.add(glfwGetTime() - (bench ? last : frame_start));
     last = glfwGetTime();  // bench: frame-to-frame, so nothing between frames goes unmeasured
@@ -244,10 +265,10 @@ int run(const studio::StudioArgs& args) {
     if (bench && frames >= args.bench_frames) break;
   }
   g_key_sink = nullptr;
-  controller.flush();  // threshold edits of the last half second
+  session->flush();  // threshold edits of the last half second
   if (bench) {
     std::printf("bench: %d frames at %dx%d, %zu segments, median frame time %.3f ms\n", frames, args.window_width,
-                args.window_height, controller.segments().size(), frame_stats.median_ms());
+                args.window_height, session->segments().size(), frame_stats.median_ms());
   }
   return 0;
 }

@@ -1,5 +1,6 @@
 // Images tab: every image with its labelling progress, filters, and navigation.
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include <imgui.h>
@@ -17,8 +18,11 @@ void draw_images_panel(studio::StudioController& controller, UiState& ui) {
   ImGui::Combo("filter", &ui.image_filter, "all\0not fully labelled\0with errors\0test split\0");
   ImGui::Text("%zu labelled segments in %zu images", controller.labelled_total(), controller.image_count());
   if (!ui.recent_projects.empty() && ImGui::CollapsingHeader("Recent projects")) {
-    ImGui::TextDisabled("open one with: fieldlines-studio PATH");
-    for (const std::string& recent : ui.recent_projects) ImGui::BulletText("%s", recent.c_str());
+    for (const std::string& recent : ui.recent_projects) {
+      if (ImGui::Selectable(recent.c_str(), recent == std::filesystem::absolute(controller.project_file()).string())) {
+        ui.open_request = recent;
+      }
+    }
   }
   ImGui::Separator();
   ImGui::BeginChild("image list");
