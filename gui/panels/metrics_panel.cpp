@@ -35,7 +35,8 @@ void draw_metrics_panel(studio::StudioController& controller, UiState& ui) {
   ImGui::TextUnformatted("Current thresholds vs labels (test = every 5th image)");
   counts_table("counts", controller.train_counts(), controller.test_counts());
   ImGui::Separator();
-  ImGui::Text("detection: last image %.2f ms, mean %.2f ms", controller.last_detect_ms(), controller.mean_detect_ms());
+  ImGui::Text("detection: this image %.2f ms, project mean %.2f ms", controller.current_detect_ms(),
+              controller.mean_detect_ms());
   if (ui.frame_stats) {
     const auto history = ui.frame_stats->history_ms();
     ImGui::Text("UI frame: median %.2f ms, last %.2f ms", ui.frame_stats->median_ms(), ui.frame_stats->last_ms());

@@ -179,6 +179,7 @@ TEST(DetectionJob, DetectsAFolderProjectInTheBackgroundAndKeepsLabels) {
     EXPECT_GT(c.project().images[i].detect_ms, 0) << i;
   }
   EXPECT_GT(c.mean_detect_ms(), 0);
+  EXPECT_EQ(c.current_detect_ms(), c.project().images[0].detect_ms);
   EXPECT_EQ(fieldlines::Project::load(file).images[2].segments.size(), c.project().images[2].segments.size());
 
   // Label one segment, re-detect everything: the label follows the same line.

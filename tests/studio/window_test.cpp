@@ -256,6 +256,22 @@ TEST_F(StudioWindow, LabelByMouseAndKeysUndoRedoAndSurviveSigkill) {
   for (std::size_t i = 5; i < s.size(); ++i) EXPECT_EQ(s[i].label, Label::Unlabelled) << i;
 
 
+  // Wheel up over segment 10 zooms at the cursor: the same segment stays under the pointer.
+  {
+    const float fitted = read_state(state_)["scale"].get<float>();
+    hover(10);
+    const auto before = on_screen(10);
+    ASSERT_EQ(run(x("click 4")), 0);
+    ASSERT_TRUE(wait_for([&] { return read_state(state_)["scale"].get<float>() > fitted * 1.1f; }, 10s));
+    EXPECT_NEAR(read_state(state_)["scale"].get<float>(), fitted * 1.2f, fitted * 0.01f);
+    const auto after = on_screen(10);
+    EXPECT_NEAR(after.first, before.first, 1);
+    EXPECT_NEAR(after.second, before.second, 1);
+    EXPECT_EQ(read_state(state_)["hovered"], 10);
+    ASSERT_EQ(run(x("key f")), 0);  // fit again
+    ASSERT_TRUE(wait_for([&] { return std::abs(read_state(state_)["scale"].get<float>() - fitted) < 1e-4f; }, 10s));
+  }
+
   // Drag a rectangle across the row of segments 8 and 9: both get the brush label (marking).
   {
     const auto a = on_screen(8), b = on_screen(9);

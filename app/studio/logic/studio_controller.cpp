@@ -292,6 +292,22 @@ void StudioController::start_training(const TrainParams& params) {
   training_.start(std::move(train_set), std::move(test_set), project_.thresholds, params);
 }
 
+double StudioController::current_detect_ms() const {
+  return image_count() ? project_.images[current_].detect_ms : 0;
+}
+
+double StudioController::mean_detect_ms() const {
+  double total = 0;
+  std::size_t n = 0;
+  for (const ImageEntry& e : project_.images) {
+    if (e.detect_ms > 0) {
+      total += e.detect_ms;
+      ++n;
+    }
+  }
+  return n ? total / static_cast<double>(n) : 0;
+}
+
 bool StudioController::apply_training_result() {
   const auto& outcome = training_.outcome();
   if (!outcome || !outcome->error.empty()) return false;
@@ -316,9 +332,6 @@ void StudioController::poll(double now_s) {
     project_.replace_segments(r.image, std::move(r.segments));
     project_.images[r.image].detect_ms = r.detect_ms;
     rebuild_features(r.image);
-    last_detect_ms_ = r.detect_ms;
-    detect_total_ms_ += r.detect_ms;
-    ++detect_count_;
     changed = true;
   }
   if (changed) {

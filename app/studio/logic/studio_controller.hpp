@@ -100,8 +100,10 @@ class StudioController {
   void set_detector_params(const DetectorParams& params);
   void detect_all(bool only_undetected = true);
   DetectionJob& detection() { return detection_; }
-  double last_detect_ms() const { return last_detect_ms_; }
-  double mean_detect_ms() const { return detect_count_ ? detect_total_ms_ / static_cast<double>(detect_count_) : 0; }
+  // Detector time of the current image (from the project), 0 when not detected here.
+  double current_detect_ms() const;
+  // Mean detector time over the project's detected images.
+  double mean_detect_ms() const;
 
   // --- training (background)
   void start_training(const TrainParams& params);
@@ -142,8 +144,6 @@ class StudioController {
   std::size_t save_count_ = 0;
   std::string save_error_;
   DetectionJob detection_;
-  double last_detect_ms_ = 0, detect_total_ms_ = 0;
-  std::size_t detect_count_ = 0;
   TrainingJob training_;
 };
 
