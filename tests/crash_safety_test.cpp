@@ -2,7 +2,9 @@
 // PROJECT` are killed with SIGKILL at random (seeded) moments, many times. After every kill the
 // file must be the old version byte for byte or a complete new one its loader accepts.
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
+#include <sys/inotify.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -67,23 +69,56 @@ int temporaries(const fs::path& file) {
   return n;
 }
 
-// Kills `args` kKills times, before each run `file` holding `old`: half the kills at uniform
-// random moments of the whole run (0 to 1.2 x its length), half in its last 15 % where the save
-// happens. `accepts` must load a complete new file without throwing.
+// Waits until a file named `prefix`... is created in the folder `inotify_fd` watches, or
+// `timeout_s` passes. Returns whether it appeared.
+bool wait_for_creation(int inotify_fd, const std::string& prefix, double timeout_s) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  alignas(inotify_event) char buf[4096];
+  while (std::chrono::steady_clock::now() < end) {
+    pollfd p{inotify_fd, POLLIN, 0};
+    if (::poll(&p, 1, 5) <= 0) continue;
+    const ssize_t n = ::read(inotify_fd, buf, sizeof buf);
+    for (ssize_t at = 0; at < n;) {
+      const auto* ev = reinterpret_cast<const inotify_event*>(buf + at);
+      if (ev->len > 0 && std::string(ev->name).rfind(prefix, 0) == 0) return true;
+      at += static_cast<ssize_t>(sizeof(inotify_event) + ev->len);
+    }
+  }
+  return false;
+}
+
+// Kills `args` kKills times, before each run `file` holding `old`, cycling three kinds of
+// moment: uniform from 0 to 2x the length of a full run; from 0.8x to 1.2x, around the save;
+// and 0-500 us after the save's temporary file appears (inotify), inside the save itself.
+// Last, one uninterrupted run must replace `old` with a complete new file. `accepts` must load a
+// complete new file without throwing.
 template <typename Accepts>
 Outcome kill_many_times(const std::vector<std::string>& args, const fs::path& file, const std::string& old,
                         Accepts accepts) {
   const double full = full_run_seconds(args);
   std::mt19937 rng(20261123);
-  std::uniform_real_distribution<double> anywhere(0.0, 1.2 * full), near_end(0.85 * full, 1.05 * full);
+  std::uniform_real_distribution<double> anywhere(0.0, 2.0 * full), near_end(0.8 * full, 1.2 * full);
+  std::uniform_int_distribution<int> in_save_us(0, 500);
+  const std::string temp_prefix = "." + file.filename().string() + ".tmp";
   Outcome o;
   for (int k = 0; k < kKills; ++k) {
     fieldlines::write_file_atomically(file, old);
     const int temps_before = temporaries(file);
-    const double at = (k % 2 == 0) ? anywhere(rng) : near_end(rng);
+    // Watch from here on, so the temporary file of our own write above is not an event.
+    const int watch_fd = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+    EXPECT_GE(watch_fd, 0);
+    EXPECT_GE(::inotify_add_watch(watch_fd, file.parent_path().c_str(), IN_CREATE), 0);
     const pid_t pid = spawn(args);
-    std::this_thread::sleep_for(std::chrono::duration<double>(at));
+    switch (k % 3) {
+      case 0: std::this_thread::sleep_for(std::chrono::duration<double>(anywhere(rng))); break;
+      case 1: std::this_thread::sleep_for(std::chrono::duration<double>(near_end(rng))); break;
+      default:
+        if (wait_for_creation(watch_fd, temp_prefix, 10 * full + 5))
+          std::this_thread::sleep_for(std::chrono::microseconds(in_save_us(rng)));
+        break;
+    }
     ::kill(pid, SIGKILL);
+    ::close(watch_fd);
     int status = 0;
     ::waitpid(pid, &status, 0);
     if (WIFEXITED(status)) ++o.finished;
@@ -96,6 +131,10 @@ Outcome kill_many_times(const std::vector<std::string>& args, const fs::path& fi
     EXPECT_NO_THROW(accepts(file)) << "kill " << k << " left a file that does not load:\n" << now.substr(0, 400);
     ++o.new_complete;
   }
+  fieldlines::write_file_atomically(file, old);
+  EXPECT_GT(full_run_seconds(args), 0.0);
+  EXPECT_NE(read_text(file), old);
+  EXPECT_NO_THROW(accepts(file));
   return o;
 }
 
@@ -113,10 +152,8 @@ TEST_F(CrashSafety, TrainKilledAnywhereLeavesOldOrCompleteThresholds) {
                                     old, [](const fs::path& f) { (void)fieldlines::load_thresholds_file(f); });
   std::printf("train: %d kills, old kept %d, new complete %d, finished before the kill %d, killed mid-save %d\n",
               kKills, o.old_kept, o.new_complete, o.finished, o.mid_save);
-  EXPECT_EQ(o.old_kept + o.new_complete, kKills);
-  // The kill moments span the whole run, so both outcomes must have occurred.
+  // Kills before the save happened (a run takes tens of milliseconds at least).
   EXPECT_GT(o.old_kept, 0);
-  EXPECT_GT(o.new_complete, 0);
 }
 
 TEST_F(CrashSafety, AutolabelKilledAnywhereLeavesOldOrCompleteProject) {
@@ -131,9 +168,7 @@ TEST_F(CrashSafety, AutolabelKilledAnywhereLeavesOldOrCompleteProject) {
                                     });
   std::printf("autolabel: %d kills, old kept %d, new complete %d, finished before the kill %d, killed mid-save %d\n",
               kKills, o.old_kept, o.new_complete, o.finished, o.mid_save);
-  EXPECT_EQ(o.old_kept + o.new_complete, kKills);
   EXPECT_GT(o.old_kept, 0);
-  EXPECT_GT(o.new_complete, 0);
 }
 
 }  // namespace
