@@ -17,8 +17,8 @@
 #include <unistd.h>
 
 #include "bench_scene.hpp"
-#include "demo_project.hpp"
 #include "fieldlines/atomic_file.hpp"
+#include "fieldlines/demo.hpp"
 #include "fieldlines/error.hpp"
 #include "frame_stats.hpp"
 #include "open_project.hpp"
@@ -181,7 +181,9 @@ int run(const studio::StudioArgs& args) {
           break;
         }
       }
-      if (input.empty()) input = studio::ensure_demo_images(studio::default_demo_folder()).string();
+      // The built-in demo project (core, shared with `fieldlines synth --demo`): 30 synthetic
+      // frames over every lighting condition, some pre-labelled, generated on first use.
+      if (input.empty()) input = ensure_demo().string();
     }
     if (studio::has_video_extension(input) && std::filesystem::is_regular_file(input)) {
       input = frames_of_video(window.get(), input, args.video_every).string();
