@@ -164,6 +164,29 @@ TEST_F(BadImages, AutolabelFloatImageIsSkipped) {
   EXPECT_CLI_FAILS(r, 1, first.filename().string() + ": unsupported pixel type 32-bit float");
 }
 
+TEST_F(BadImages, AutolabelGreyDeepAndTinyImagesAreLabelled) {
+  // Same loader as detect: grey and 16-bit frames are labelled, a 1x1 frame has no segments.
+  const fs::path set = synth_set("set");
+  const auto images = set_images(set);
+  ASSERT_EQ(images.size(), 2u);
+  const cv::Mat bgr = cv::imread(images[0].string(), cv::IMREAD_COLOR);
+  cv::Mat grey, deep;
+  cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
+  cv::imread(images[1].string(), cv::IMREAD_COLOR).convertTo(deep, CV_16U, 257.0);
+  image(fs::relative(images[0], dir_).string(), grey);
+  image(fs::relative(images[1], dir_).string(), deep);
+  auto r = run({"autolabel", set.string(), "--quiet", "-o", path("p.json").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  json j = json::parse(read_text(path("p.json")));
+  ASSERT_EQ(j.at("images").size(), 2u);
+  EXPECT_FALSE(j["images"][1]["segments"].empty());  // the 16-bit frame finds the same lines
+  image(fs::relative(images[0], dir_).string(), cv::Mat(1, 1, CV_8UC3, cv::Scalar(1, 2, 3)));
+  r = run({"autolabel", set.string(), "--quiet", "-o", path("q.json").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = json::parse(read_text(path("q.json")));
+  EXPECT_TRUE(j["images"][0]["segments"].empty());
+}
+
 TEST_F(BadImages, AutolabelCorruptGroundTruthIsSkipped) {
   const fs::path set = synth_set("set");
   const fs::path first = set_images(set).front();

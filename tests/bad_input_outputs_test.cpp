@@ -130,6 +130,16 @@ TEST_F(BadOutputs, EvalAndSweepRefuseToWriteOverTheirInputs) {
 
 TEST_F(BadOutputs, DetectJsonFullDiskKeepsTheOldFile) { expect_full_disk_keeps_old("detect", "{\"old\": true}\n"); }
 TEST_F(BadOutputs, DetectCsvFullDiskKeepsTheOldFile) { expect_full_disk_keeps_old("detect-csv", "old csv\n"); }
+TEST_F(BadOutputs, DetectDrawFullDiskReportsEveryOverlay) {
+  // Overlays are per image: each failed write is that image's failure (exit 1), and an old
+  // overlay of the same name is kept.
+  const std::string a = image_a(), b = image_b();
+  const fs::path old = bytes("ov/a.png", "old overlay");
+  const CliRun r = run_with_file_limit({"detect", "--quiet", "--draw", path("ov").string(), a, b}, 0);
+  EXPECT_CLI_FAILS(r, 1, "a.png: cannot save '" + old.string() + "': File too large", "b.png: cannot save",
+                   "2 of 2 inputs failed");
+  EXPECT_EQ(read_text(old), "old overlay");
+}
 TEST_F(BadOutputs, BenchJsonFullDiskKeepsTheOldFile) { expect_full_disk_keeps_old("bench", "{\"old\": 1}\n"); }
 TEST_F(BadOutputs, TrainFullDiskKeepsTheOldThresholds) {
   expect_full_disk_keeps_old("train", read_text(thresholds("previous.json")));
