@@ -128,11 +128,19 @@ TEST_F(BadData, ProjectNewerVersion) {
   expect_all_refuse(path("p.json"), {"p.json", "newer"});
 }
 
-TEST_F(BadData, ProjectOutOfRangeSegmentValue) {
+TEST_F(BadData, ProjectOutOfRangeDetectorValue) {
   json j = json::parse(read_text(project("p.json")));
   j["detector"]["scan_interval"] = -3;
   bytes("p.json", j.dump());
   expect_all_refuse(path("p.json"), {"p.json", "scan_interval"});
+}
+
+TEST_F(BadData, ProjectSegmentValueBeyondFloat) {
+  // Valid JSON, but 1e300 is infinite as the float a segment holds.
+  json j = json::parse(read_text(project("p.json")));
+  j["images"][0]["segments"][0][9] = 1e300;
+  bytes("p.json", j.dump());
+  expect_all_refuse(path("p.json"), {"p.json: images[0].segments[0]: 'gy_g' must be finite"});
 }
 
 TEST_F(BadData, ProjectWrongTypeInSegment) {

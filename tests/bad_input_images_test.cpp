@@ -155,8 +155,8 @@ TEST_F(BadImages, AutolabelTruncatedImageIsSkipped) {
 TEST_F(BadImages, AutolabelFloatImageIsSkipped) {
   const fs::path set = synth_set("set");
   const fs::path first = set_images(set).front();
-  // Same name, so the ground truth still matches; a 16-bit PNG cannot be float, so use TIFF
-  // content under the .png name (OpenCV decodes by content).
+  // Same name, so the ground truth still matches. PNG cannot hold float pixels, so TIFF content
+  // goes under the .png name (OpenCV decodes by content, not by extension).
   std::vector<unsigned char> tiff;
   ASSERT_TRUE(cv::imencode(".tiff", cv::Mat(20, 20, CV_32FC3, cv::Scalar(0.5, 0.5, 0.5)), tiff));
   bytes(fs::relative(first, dir_).string(), std::string(tiff.begin(), tiff.end()));
