@@ -10,6 +10,7 @@
 #include "fieldlines/atomic_file.hpp"
 #include "fieldlines/error.hpp"
 #include "fieldlines/params_json.hpp"
+#include "json_text.hpp"
 
 namespace fieldlines {
 namespace {
@@ -41,12 +42,7 @@ Segment segment_from_json(const json& j, const std::string& where) {
 
 // Parses the text as a project; throws with `where` in the message.
 Project parse_project(const std::string& text, const std::string& where) {
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
-    throw Error(where + ": damaged project file (malformed JSON: " + e.what() + ")");
-  }
+  const json j = parse_json_text(text, where + ": damaged project file");
   if (!j.is_object() || j.value("format", std::string()) != "fieldlines-project")
     throw Error(where + ": not a fieldlines project file (\"format\" must be \"fieldlines-project\")");
   const auto v = j.find("version");

@@ -8,6 +8,7 @@
 
 #include "fieldlines/atomic_file.hpp"
 #include "fieldlines/error.hpp"
+#include "json_text.hpp"
 
 namespace fieldlines::synth {
 namespace {
@@ -271,13 +272,7 @@ GroundTruth truth_from_json(const json& j, const std::string& ctx) {
 }
 
 GroundTruth load_truth(const std::filesystem::path& path) {
-  const std::string text = read_file(path);
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
-    throw Error(path.string() + ": malformed JSON (" + e.what() + ")");
-  }
+  const json j = parse_json_text(read_file(path), path.string());
   return truth_from_json(j, path.string());
 }
 

@@ -3,6 +3,7 @@
 #include "fieldlines/atomic_file.hpp"
 #include "fieldlines/error.hpp"
 #include "fieldlines/params_json.hpp"
+#include "json_text.hpp"
 
 namespace fieldlines {
 
@@ -40,13 +41,7 @@ ThresholdsFile thresholds_file_from_json(const json& j, const std::string& where
 }
 
 ThresholdsFile load_thresholds_file(const std::filesystem::path& path) {
-  const std::string text = read_file(path);
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
-    throw Error(path.string() + ": malformed JSON: " + e.what());
-  }
+  const json j = parse_json_text(read_file(path), path.string());
   return thresholds_file_from_json(j, path.string());
 }
 
