@@ -2,7 +2,6 @@
 // missing, empty, truncated, corrupt, unusual-type and extreme-size images. Rows already
 // covered by cli_detect_test / image_io_test / cli_bench_test are listed in docs/bad_input.md
 // and not repeated here.
-#include <chrono>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -57,22 +56,19 @@ TEST_F(BadImages, DetectOneByOneImageGivesNoSegments) {
   EXPECT_TRUE(j["images"][0]["segments"].empty());
 }
 
-TEST_F(BadImages, DetectTenThousandSquareImageIsProcessedInSeconds) {
+TEST_F(BadImages, DetectTenThousandSquareImageIsProcessed) {
   // A real 10000x10000 (100 Mpx, the load limit) image: flat carpet and one painted line.
   cv::Mat big(10000, 10000, CV_8UC1, cv::Scalar(90));
   cv::line(big, {500, 3000}, {9500, 3300}, cv::Scalar(250), 20);
   const fs::path p = path("big.png");
   ASSERT_TRUE(cv::imwrite(p.string(), big, {cv::IMWRITE_PNG_COMPRESSION, 1}));
   big.release();
-  const auto t0 = std::chrono::steady_clock::now();
+  // About 2 s in all (1.3 s in the CLI, 1.4 GB peak); no timing assertion, see docs/bad_input.md.
   const auto r = run({"detect", "--json", path("o.json").string(), p.string()});
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json j = json::parse(read_text(path("o.json")));
   EXPECT_EQ(j["images"][0]["width"], 10000);
   EXPECT_FALSE(j["images"][0]["segments"].empty());
-  // Not a speed measurement: a guard that a frame this size is not minutes of work.
-  EXPECT_LT(s, 60.0);
 }
 
 TEST_F(BadImages, DetectJustOverThePixelLimitIsRefusedFromTheHeader) {
