@@ -205,7 +205,7 @@ TEST_F(BadImages, AutolabelWithEveryImageFailingKeepsThePreviousProject) {
 
 TEST_F(BadImages, AutolabelMissingSetFolder) {
   const auto r = run({"autolabel", path("nowhere").string(), "-o", path("p.json").string()});
-  EXPECT_CLI_FAILS(r, 2, "nowhere");
+  EXPECT_CLI_FAILS(r, 2, "nowhere: not a folder");
   EXPECT_FALSE(fs::exists(path("p.json")));
 }
 
