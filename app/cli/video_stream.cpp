@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <vector>
 
-#include <opencv2/core/utils/logger.hpp>
 #include <opencv2/videoio.hpp>
 
 #include "fieldlines/detector.hpp"
 #include "fieldlines/error.hpp"
 #include "fieldlines/overlay.hpp"
+#include "open_video.hpp"
 
 namespace fieldlines::cli {
 namespace {
@@ -37,14 +37,7 @@ cv::VideoCapture open_source(const std::string& source) {
     std::error_code ec;
     if (source.find("://") == std::string::npos && !std::filesystem::is_regular_file(source, ec))
       throw Error("--video " + source + ": no such file");
-    // FFmpeg reads nearly every file and stream; OpenCV's own MJPEG reader needs no codec
-    // library. Probing every backend (GStreamer, Aravis...) only adds noise and leaks on junk.
-    // Failed attempts log their own messages; ours below says what matters.
-    const auto level = cv::utils::logging::getLogLevel();
-    cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
-    for (const int backend : {cv::CAP_FFMPEG, cv::CAP_OPENCV_MJPEG})
-      if (capture.open(source, backend)) break;
-    cv::utils::logging::setLogLevel(level);
+    app::open_video_file(capture, source);
   }
   if (!capture.isOpened()) throw Error("--video " + source + ": cannot open (missing file, not a video, or no such camera)");
   return capture;

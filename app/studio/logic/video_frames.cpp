@@ -1,5 +1,7 @@
 #include "video_frames.hpp"
 
+#include "open_video.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -45,8 +47,8 @@ void VideoFramesJob::start(const std::filesystem::path& video, const std::filesy
   worker_ = std::jthread([this, video, folder, params](std::stop_token stop) {
     try {
       if (params.every < 1) throw Error("video: every-n-th frame must be >= 1");
-      cv::VideoCapture capture(video.string());
-      if (!capture.isOpened()) throw Error(video.string() + ": cannot open as a video");
+      cv::VideoCapture capture;
+      if (!app::open_video_file(capture, video.string())) throw Error(video.string() + ": cannot open as a video");
       std::error_code ec;
       std::filesystem::create_directories(folder, ec);
       if (ec) throw Error(folder.string() + ": cannot create the frames folder (" + ec.message() + ")");
