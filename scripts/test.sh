@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# All tests: the release build's suite, the same suite under AddressSanitizer +
+# UndefinedBehaviorSanitizer, and each libFuzzer target for FUZZ_SECONDS (default 30).
+# FIELDLINES_TEST_STAGES selects stages (default "release asan fuzz").
+set -euo pipefail
+cd "$(dirname "$0")/.."
+stages="${FIELDLINES_TEST_STAGES:-release asan fuzz}"
+for stage in $stages; do
+  echo "=== test stage: $stage ==="
+  case "$stage" in
+    release) ctest --preset release --output-on-failure ;;
+    asan)
+      cmake --preset asan >/dev/null
+      cmake --build --preset asan -j"$(nproc)"
+      ctest --preset asan --output-on-failure ;;
+    fuzz) bash scripts/fuzz.sh ;;
+    *) echo "unknown test stage '$stage'" >&2; exit 2 ;;
+  esac
+done
