@@ -20,14 +20,7 @@ using nlohmann::json;
 
 namespace {
 
-class CliBench : public fieldlines::test::TempDirTest {
- protected:
-  fs::path write_image(const std::string& name, const cv::Mat& img) const {
-    const fs::path p = dir_ / name;
-    EXPECT_TRUE(cv::imwrite(p.string(), img)) << p;
-    return p;
-  }
-};
+class CliBench : public fieldlines::test::TempDirTest {};
 
 }  // namespace
 

@@ -28,18 +28,6 @@ namespace {
 
 class CliDetect : public fieldlines::test::TempDirTest {
  protected:
-  fs::path write_image(const fs::path& relative, const cv::Mat& img) const {
-    const fs::path p = dir_ / relative;
-    fs::create_directories(p.parent_path());
-    EXPECT_TRUE(cv::imwrite(p.string(), img)) << p;
-    return p;
-  }
-  fs::path write_bytes(const fs::path& relative, const std::string& bytes) const {
-    const fs::path p = dir_ / relative;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p, std::ios::binary) << bytes;
-    return p;
-  }
   CliRun run(const std::vector<std::string>& args) const { return run_cli(args, dir_); }
   json read_json(const fs::path& p) const { return json::parse(read_text(p)); }
 };

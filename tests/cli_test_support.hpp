@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "shared_data.hpp"
@@ -67,6 +68,21 @@ class TempDirTest : public ::testing::Test {
     std::filesystem::create_directories(dir_);
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  // Writes an image (format from the extension) or raw bytes under the folder, making parents.
+  std::filesystem::path write_image(const std::filesystem::path& relative, const cv::Mat& img) const {
+    const auto p = dir_ / relative;
+    std::filesystem::create_directories(p.parent_path());
+    EXPECT_TRUE(cv::imwrite(p.string(), img)) << p;
+    return p;
+  }
+  std::filesystem::path write_bytes(const std::filesystem::path& relative, const std::string& bytes) const {
+    const auto p = dir_ / relative;
+    std::filesystem::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << bytes;
+    return p;
+  }
+
   std::filesystem::path dir_;
 };
 
