@@ -2,7 +2,6 @@
 // PROJECT` are killed with SIGKILL at random (seeded) moments, many times. After every kill the
 // file must be the old version byte for byte or a complete new one its loader accepts.
 #include <fcntl.h>
-#include <poll.h>
 #include <signal.h>
 #include <sys/inotify.h>
 #include <sys/wait.h>
@@ -17,11 +16,14 @@
 #include "fieldlines/atomic_file.hpp"
 #include "fieldlines/dataset.hpp"
 #include "fieldlines/thresholds_file.hpp"
+#include "save_watch.hpp"
 
 namespace fs = std::filesystem;
 using fieldlines::test::BadInputTest;
 using fieldlines::test::cli_path;
 using fieldlines::test::read_text;
+using fieldlines::test::temporaries;
+using fieldlines::test::wait_for_creation;
 
 namespace {
 
@@ -60,33 +62,6 @@ struct Outcome {
   int mid_save = 0;  // kills that left a temporary file: they landed inside the save itself
 };
 
-// Hidden temporary files a killed save leaves beside `file` (".<name>.tmpNNN"): the only debris
-// allowed, never a damaged `file`.
-int temporaries(const fs::path& file) {
-  int n = 0;
-  for (const auto& e : fs::directory_iterator(file.parent_path()))
-    if (e.path().filename().string().rfind("." + file.filename().string() + ".tmp", 0) == 0) ++n;
-  return n;
-}
-
-// Waits until a file named `prefix`... is created in the folder `inotify_fd` watches, or
-// `timeout_s` passes. Returns whether it appeared.
-bool wait_for_creation(int inotify_fd, const std::string& prefix, double timeout_s) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
-  alignas(inotify_event) char buf[4096];
-  while (std::chrono::steady_clock::now() < end) {
-    pollfd p{inotify_fd, POLLIN, 0};
-    if (::poll(&p, 1, 5) <= 0) continue;
-    const ssize_t n = ::read(inotify_fd, buf, sizeof buf);
-    for (ssize_t at = 0; at < n;) {
-      const auto* ev = reinterpret_cast<const inotify_event*>(buf + at);
-      if (ev->len > 0 && std::string(ev->name).rfind(prefix, 0) == 0) return true;
-      at += static_cast<ssize_t>(sizeof(inotify_event) + ev->len);
-    }
-  }
-  return false;
-}
-
 // Kills `args` kKills times, before each run `file` holding `old`, cycling three kinds of
 // moment: uniform from 0 to 2x the length of a full run; from 0.8x to 1.2x, around the save;
 // and 0-500 us after the save's temporary file appears (inotify), inside the save itself.
@@ -99,7 +74,7 @@ Outcome kill_many_times(const std::vector<std::string>& args, const fs::path& fi
   std::mt19937 rng(20261123);
   std::uniform_real_distribution<double> anywhere(0.0, 2.0 * full), near_end(0.8 * full, 1.2 * full);
   std::uniform_int_distribution<int> in_save_us(0, 500);
-  const std::string temp_prefix = "." + file.filename().string() + ".tmp";
+  const std::string temp_prefix = fieldlines::test::temporary_prefix(file);
   Outcome o;
   for (int k = 0; k < kKills; ++k) {
     fieldlines::write_file_atomically(file, old);
@@ -113,7 +88,7 @@ Outcome kill_many_times(const std::vector<std::string>& args, const fs::path& fi
       case 0: std::this_thread::sleep_for(std::chrono::duration<double>(anywhere(rng))); break;
       case 1: std::this_thread::sleep_for(std::chrono::duration<double>(near_end(rng))); break;
       default:
-        if (wait_for_creation(watch_fd, temp_prefix, 10 * full + 5))
+        if (wait_for_creation(watch_fd, temp_prefix, std::chrono::duration<double>(10 * full + 5)))
           std::this_thread::sleep_for(std::chrono::microseconds(in_save_us(rng)));
         break;
     }

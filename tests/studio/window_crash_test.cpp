@@ -1,0 +1,100 @@
+// Crash safety of the studio's autosave: the real studio under Xvfb labels one segment over and
+// over (xdotool holding M and B, one save per key) and is killed with SIGKILL at seeded moments,
+// a third of them a few microseconds after the save's temporary file appears (inotify). After
+// every kill the project file must load and be the old project or a complete newer one: same
+// images and segments, only the driven segment's label changed. The next start reopens it.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/inotify.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <thread>
+
+#include "fieldlines/dataset.hpp"
+#include "save_watch.hpp"
+#include "x_session.hpp"
+
+namespace fs = std::filesystem;
+using fieldlines::Label;
+using fieldlines::test::temporaries;
+using fieldlines::test::wait_for_creation;
+using namespace std::chrono_literals;
+
+namespace {
+
+constexpr int kKills = 15;
+
+class StudioCrash : public studio_test::StudioUnderX {
+ protected:
+  void SetUp() override {
+    StudioUnderX::SetUp();
+    // Large enough that a save takes milliseconds: 12 images x 400 segments.
+    project_ = studio_test::write_project(dir(), 12, 400, 640, 480);
+    segments_ = fieldlines::Project::load(project_).images[0].segments;
+  }
+};
+
+TEST_F(StudioCrash, KilledDuringAutosavesLeavesOldOrCompleteProject) {
+  const fieldlines::Project original = fieldlines::Project::load(project_);
+  const std::string temp_prefix = fieldlines::test::temporary_prefix(project_);
+  std::mt19937 rng(20261129);
+  std::uniform_int_distribution<int> anywhere_ms(0, 1500), in_save_us(0, 100);
+  int mid_save = 0, changed = 0;
+  for (int k = 0; k < kKills; ++k) {
+    auto studio = start_studio();
+    ASSERT_TRUE(studio->running()) << log();
+    const std::size_t target = static_cast<std::size_t>(k) * 7 % segments_.size();
+    hover(target);
+    const int temps_before = temporaries(project_);
+    // M, B, M, B ... on the hovered segment: every key press changes its label and saves.
+    studio_test::Child keys({"/usr/bin/xdotool", "key", "--delay", "15", "--repeat", "400", "m", "b"},
+                            {"DISPLAY=" + display_.name}, dir() / "xdotool.log");
+    if (k % 3 == 2) {
+      std::this_thread::sleep_for(200ms);  // let a few saves complete first
+      const int watch = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+      ASSERT_GE(watch, 0);
+      ASSERT_GE(::inotify_add_watch(watch, dir().c_str(), IN_CREATE), 0);
+      EXPECT_TRUE(wait_for_creation(watch, temp_prefix, 10s)) << "no save started";
+      std::this_thread::sleep_for(std::chrono::microseconds(in_save_us(rng)));
+      ::close(watch);
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(anywhere_ms(rng)));
+    }
+    studio->kill(SIGKILL);
+    studio->wait();
+    keys.kill(SIGKILL);
+    if (temporaries(project_) > temps_before) ++mid_save;
+
+    fieldlines::Project now;
+    ASSERT_NO_THROW(now = fieldlines::Project::load(project_)) << "kill " << k << " left a project that does not load";
+    ASSERT_EQ(now.images.size(), original.images.size());
+    for (std::size_t i = 0; i < now.images.size(); ++i) {
+      const auto& a = now.images[i].segments;
+      const auto& b = original.images[i].segments;
+      ASSERT_EQ(a.size(), b.size()) << "kill " << k << ", image " << i;
+      for (std::size_t j = 0; j < a.size(); ++j) {
+        EXPECT_FLOAT_EQ(a[j].x0, b[j].x0);
+        // Only the segments driven so far may carry labels, and only the ones M and B give.
+        const bool driven = i == 0 && j % 7 == 0 && j <= target;
+        if (!driven) {
+          EXPECT_EQ(a[j].label, Label::Unlabelled) << "kill " << k << ", image " << i << ", segment " << j;
+        }
+      }
+    }
+    const Label l = now.images[0].segments[target].label;
+    EXPECT_TRUE(l == Label::Unlabelled || l == Label::Marking || l == Label::Boundary) << static_cast<int>(l);
+    if (l != Label::Unlabelled) ++changed;
+  }
+  std::printf("studio: %d kills, %d landed inside a save (temporary file left), %d after the driven label changed\n",
+              kKills, mid_save, changed);
+  // Most kills come long after the first save, so the label must have reached the disk.
+  EXPECT_GT(changed, kKills / 2);
+}
+
+}  // namespace
