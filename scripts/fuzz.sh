@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (preset `fuzz`, clang) and runs each for FUZZ_SECONDS (default 30)
 # from a copy of its committed seed corpus. Any crash, leak or sanitizer report fails.
-# Prints executions per second and coverage per target.
+# Prints executions per second and coverage per target; a finding is kept in build/fuzz/findings/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${FUZZ_SECONDS:-30}"
@@ -18,7 +18,9 @@ for fuzzer in build/fuzz/tests/fuzz/*_fuzz; do
     cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || echo "?")
     echo "fuzz: $name ok — ${seconds}s, ${execs} exec/s, coverage ${cov} edges"
   else
-    echo "fuzz: $name FAILED; last lines:" >&2
+    mkdir -p build/fuzz/findings/"$name"
+    cp "$log" "$work"/crash-* "$work"/leak-* "$work"/timeout-* "$work"/oom-* build/fuzz/findings/"$name"/ 2>/dev/null || true
+    echo "fuzz: $name FAILED (input and log kept in build/fuzz/findings/$name); last lines:" >&2
     tail -40 "$log" >&2
     status=1
   fi
