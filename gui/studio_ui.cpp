@@ -69,6 +69,11 @@ void draw_status_bar(const studio::StudioController& controller, const UiState& 
     ImGui::SameLine();
     ImGui::TextDisabled("  %s", ui.status_message.c_str());
   }
+  if (const std::string detection = controller.detection_report().summary(); !detection.empty()) {
+    ImGui::SameLine();
+    const bool failed = !controller.detection_report().failed.empty();
+    ImGui::TextColored(failed ? ImVec4{1, 0.5f, 0.3f, 1} : ImVec4{0.6f, 0.6f, 0.6f, 1}, "  %s", detection.c_str());
+  }
   if (!controller.save_error().empty()) {
     ImGui::SameLine();
     ImGui::TextColored({1, 0.4f, 0.4f, 1}, "  autosave failed: %s", controller.save_error().c_str());

@@ -32,15 +32,6 @@ namespace {
 
 using namespace fieldlines;
 
-// Key presses collected by the GLFW callback between two frames (the UI thread only).
-std::vector<gui::KeyPress>* g_key_sink = nullptr;
-
-void on_key(GLFWwindow* /*window*/, int key, int /*scancode*/, int action, int mods) {
-  if (g_key_sink && (action == GLFW_PRESS || action == GLFW_REPEAT)) {
-    g_key_sink->push_back({key, mods, action == GLFW_REPEAT});
-  }
-}
-
 void on_glfw_error(int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); }
 
 // GLFW + ImGui lifetime (RAII so every exit path tears down in order).
@@ -60,7 +51,14 @@ class Window {
     glfwSetWindowPos(window_, 0, 0);  // a known place on screen (tests drive it with xdotool)
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(vsync ? 1 : 0);
-    glfwSetKeyCallback(window_, on_key);  // installed first: the ImGui backend chains to it
+    // Key presses reach this window's own queue (no global); installed before the ImGui backend,
+    // which chains to it.
+    glfwSetWindowUserPointer(window_, this);
+    glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int /*scancode*/, int action, int mods) {
+      if (action == GLFW_PRESS || action == GLFW_REPEAT) {
+        static_cast<Window*>(glfwGetWindowUserPointer(w))->keys_.push_back({key, mods, action == GLFW_REPEAT});
+      }
+    });
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // layout is fixed; never write imgui.ini into the cwd
@@ -78,9 +76,12 @@ class Window {
   Window(const Window&) = delete;
   Window& operator=(const Window&) = delete;
   GLFWwindow* get() const { return window_; }
+  // Key presses since the last frame (UI thread only); the frame consumes and clears them.
+  std::vector<gui::KeyPress>& keys() { return keys_; }
 
  private:
   GLFWwindow* window_ = nullptr;
+  std::vector<gui::KeyPress> keys_;
 };
 
 // Writes the state an automated test needs to drive the window (where the image is on screen,
@@ -206,8 +207,7 @@ int run(const studio::StudioArgs& args) {
   gui::UiState ui;
   ui.frame_stats = &frame_stats;
   ui.recent_projects = recent;
-  std::vector<gui::KeyPress> keys;
-  g_key_sink = &keys;
+  std::vector<gui::KeyPress>& keys = window.keys();
 
   StateWriter state_writer(args.state_file);
   double last = glfwGetTime();  // end of the previous frame
@@ -266,7 +266,6 @@ int run(const studio::StudioArgs& args) {
     ++frames;
     if (bench && frames >= args.bench_frames) break;
   }
-  g_key_sink = nullptr;
   session->flush();  // threshold edits of the last half second
   if (bench) {
     std::printf("bench: %d frames at %dx%d, %zu segments, median frame time %.3f ms\n", frames, args.window_width,

@@ -43,6 +43,11 @@ void draw_images_panel(studio::StudioController& controller, UiState& ui) {
       ImGui::SameLine();
       ImGui::TextColored({1, 0.5f, 0.3f, 1}, "%ld err", p.errors);
     }
+    if (const std::string& failure = controller.detection_error(i); !failure.empty()) {
+      ImGui::SameLine();
+      ImGui::TextColored({1, 0.3f, 0.3f, 1}, "unreadable");
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", failure.c_str());
+    }
     ImGui::PopID();
   }
   ImGui::EndChild();

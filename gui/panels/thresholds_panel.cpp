@@ -57,7 +57,12 @@ void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/
   } else {
     if (ImGui::Button("Detect new images")) controller.detect_all(true);
     ImGui::SameLine();
-    if (ImGui::Button("Re-detect all (drops labels)")) controller.detect_all(false);
+    // Labels follow the new segments by geometry; the status bar says how many could not.
+    if (ImGui::Button("Re-detect all")) controller.detect_all(false);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("Detect every image again with these parameters; labels move to the new segments\n"
+                        "that overlap the old ones (same direction, within a few pixels)");
+    }
   }
 }
 

@@ -195,6 +195,35 @@ TEST(DetectionJob, DetectsAFolderProjectInTheBackgroundAndKeepsLabels) {
   }
   EXPECT_GE(marked, 1u);
   EXPECT_FALSE(c.can_undo());  // segment indices changed: history cleared
+  EXPECT_EQ(c.detection_report().detected, 3u);
+  EXPECT_EQ(c.detection_report().labels_kept, 1u);
+  EXPECT_EQ(c.detection_report().labels_lost, 0u);
+  EXPECT_EQ(c.detection_report().summary(), "detected 3 images; 1 labels kept");
+}
+
+TEST(DetectionJob, CorruptImageIsReportedByNameAndTheOthersAreDetected) {
+  studio_test::TempDir dir("detect-bad");
+  fieldlines::Project p;
+  fieldlines::Segment line;  // tilted: exactly horizontal edges between anchor rows are never drawn
+  line.x0 = 20, line.y0 = 100, line.x1 = 300, line.y1 = 130;
+  cv::imwrite((dir.path() / "good.png").string(), studio_test::field_image(320, 240, {line}));
+  fieldlines::write_file_atomically(dir.path() / "bad.png", "\x89PNG\r\n\x1a\n truncated");
+  p.images.push_back({"good.png", {}, 0});
+  p.images.push_back({"bad.png", {}, 0});
+  const auto file = dir.path() / "p.json";
+  p.save(file);
+  fs::StudioController c(fieldlines::Project::load(file), file);
+  c.detect_all(true);
+  c.detection().wait();
+  c.poll();
+  EXPECT_EQ(c.detection_report().detected, 1u);
+  ASSERT_EQ(c.detection_report().failed.size(), 1u);
+  EXPECT_EQ(c.detection_report().failed[0].first, 1u);
+  EXPECT_NE(c.detection_error(1).find("bad.png"), std::string::npos) << c.detection_error(1);
+  EXPECT_TRUE(c.detection_error(0).empty());
+  EXPECT_NE(c.detection_report().summary().find("1 failed: "), std::string::npos) << c.detection_report().summary();
+  EXPECT_GT(c.project().images[0].segments.size(), 0u);
+  EXPECT_TRUE(c.needs_detection(1));  // still undetected: "Detect new images" tries it again
 }
 
 TEST(VideoFramesJob, KeepsEveryNthFrameAsPng) {

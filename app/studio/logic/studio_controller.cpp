@@ -274,7 +274,25 @@ void StudioController::autosave() {
 
 // ---------------------------------------------------------------- background jobs
 
+std::string DetectionReport::summary() const {
+  if (detected == 0 && failed.empty()) return {};
+  std::string out = "detected " + std::to_string(detected) + " image" + (detected == 1 ? "" : "s");
+  if (labels_kept + labels_lost > 0) {
+    out += "; " + std::to_string(labels_kept) + " labels kept";
+    if (labels_lost > 0) out += ", " + std::to_string(labels_lost) + " could not be re-attached";
+  }
+  if (!failed.empty()) out += "; " + std::to_string(failed.size()) + " failed: " + failed.front().second;
+  if (failed.size() > 1) out += " (and " + std::to_string(failed.size() - 1) + " more, see the Images tab)";
+  return out;
+}
+
+const std::string& StudioController::detection_error(std::size_t index) const {
+  static const std::string none;
+  return index < detection_errors_.size() ? detection_errors_[index] : none;
+}
+
 void StudioController::detect_all(bool only_undetected) {
+  detection_report_ = {};
   std::vector<DetectionJob::Item> items;
   for (std::size_t i = 0; i < image_count(); ++i) {
     if (!only_undetected || needs_detection(i)) items.push_back({i, image_path(i)});
@@ -326,10 +344,22 @@ void StudioController::poll(double now_s) {
   }
   bool changed = false;
   for (DetectionResult& r : detection_.poll()) {
-    if (r.image >= image_count() || !r.error.empty()) continue;
+    if (r.image >= image_count()) {  // the job could not start (bad detector parameters)
+      if (!r.error.empty()) detection_report_.failed.emplace_back(r.image, r.error);
+      continue;
+    }
+    detection_errors_.resize(image_count());
+    detection_errors_[r.image] = r.error;
+    if (!r.error.empty()) {
+      detection_report_.failed.emplace_back(r.image, r.error);
+      continue;
+    }
     // Human labels move to the new segments that match the old ones (the rest are Unlabelled).
     for (Segment& s : r.segments) s.label = Label::Unlabelled;
-    project_.replace_segments(r.image, std::move(r.segments));
+    const ReattachStats stats = project_.replace_segments(r.image, std::move(r.segments));
+    ++detection_report_.detected;
+    detection_report_.labels_kept += stats.kept;
+    detection_report_.labels_lost += stats.lost;
     project_.images[r.image].detect_ms = r.detect_ms;
     rebuild_features(r.image);
     changed = true;

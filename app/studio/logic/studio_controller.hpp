@@ -7,6 +7,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <opencv2/core/mat.hpp>
@@ -25,6 +26,16 @@ struct ControllerOptions {
   bool autosave = true;  // save the project atomically after every label edit
   bool load_pixels = true;  // read the current image from disk (tests can skip it)
   int test_every = 5;       // every n-th image (1-based index % n == 0) is in the test split
+};
+
+// What the background detections since the last detect_all() did: how many images, the labels
+// re-attached to the new segments by geometry and those that could not be, and the images that
+// failed (unreadable or corrupt), each with its reason.
+struct DetectionReport {
+  std::size_t detected = 0;
+  std::size_t labels_kept = 0, labels_lost = 0;
+  std::vector<std::pair<std::size_t, std::string>> failed;  // image index, reason
+  std::string summary() const;  // one line for the status bar; empty before any detection
 };
 
 struct ImageProgress {
@@ -100,6 +111,9 @@ class StudioController {
   void set_detector_params(const DetectorParams& params);
   void detect_all(bool only_undetected = true);
   DetectionJob& detection() { return detection_; }
+  const DetectionReport& detection_report() const { return detection_report_; }
+  // The reason the image's last detection failed, or empty.
+  const std::string& detection_error(std::size_t index) const;
   // Detector time of the current image (from the project), 0 when not detected here.
   double current_detect_ms() const;
   // Mean detector time over the project's detected images.
@@ -144,6 +158,8 @@ class StudioController {
   std::size_t save_count_ = 0;
   std::string save_error_;
   DetectionJob detection_;
+  DetectionReport detection_report_;
+  std::vector<std::string> detection_errors_;  // per image
   TrainingJob training_;
 };
 
