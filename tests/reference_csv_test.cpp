@@ -139,18 +139,3 @@ TEST(ReferenceCsvShared, ReadsAndRoundTripsTheAuthorsFiles) {
   }
 }
 
-TEST_F(TempDir, AtomicWriteReplacesAndLeavesNoTemporaryFiles) {
-  const fs::path p = dir_ / "f.txt";
-  fl::write_file_atomically(p, "one");
-  fl::write_file_atomically(p, "two");
-  EXPECT_EQ(fl::read_file(p), "two");
-  int files = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_)) ++files;
-  EXPECT_EQ(files, 1);
-  try {
-    fl::write_file_atomically(dir_ / "no_such_dir" / "f.txt", "x");
-    FAIL() << "expected an error";
-  } catch (const fl::Error& e) {
-    EXPECT_NE(std::string(e.what()).find("no_such_dir"), std::string::npos);
-  }
-}

@@ -100,7 +100,9 @@ class StateWriter {
                                {"save_count", c.save_count()},
                                {"panel", gui::panel_name(ui.shown_panel)},
                                {"training", c.training().running()},
-                               {"trained", c.training().outcome().has_value()}};
+                               {"trained", c.training().outcome().has_value()},
+                               {"detection", c.detection_report().summary()},
+                               {"image_error", c.image_error()}};
     std::string text = state.dump();
     if (text == last_) return;
     write_file_atomically(path_, text + "\n");
@@ -157,48 +159,64 @@ std::filesystem::path frames_of_video(GLFWwindow* window, const std::filesystem:
   return folder;
 }
 
+// The project to open, resolved before any window exists, so that a missing path or a damaged
+// project file is a plain message on stderr and exit 2, not a window that closes again. A video
+// is only located here: its frames are extracted with a progress bar once the window is up.
+struct Startup {
+  studio::OpenedProject opened;
+  std::filesystem::path video;  // non-empty: extract its frames, then open that folder
+  bool autosave = true;
+};
+
+Startup resolve_startup(const studio::StudioArgs& args, const std::vector<std::string>& recent) {
+  Startup start;
+  if (args.bench_frames > 0 && args.input.empty()) {
+    const auto folder = std::filesystem::temp_directory_path() / ("fieldlines-bench-" + std::to_string(::getpid()));
+    start.opened.project = studio::write_bench_scene(folder);
+    start.opened.file = folder / "bench-project.json";
+    start.autosave = false;
+    return start;
+  }
+  std::string input = args.input;
+  if (input.empty()) {
+    // The most recent project that still exists, else the demo.
+    for (const auto& r : recent) {
+      if (std::filesystem::exists(r)) {
+        input = r;
+        break;
+      }
+    }
+    // The built-in demo project (core, shared with `fieldlines synth --demo`): 30 synthetic
+    // frames over every lighting condition, some pre-labelled, generated on first use.
+    if (input.empty()) input = ensure_demo().string();
+  }
+  if (studio::has_video_extension(input) && std::filesystem::is_regular_file(input)) {
+    start.video = input;
+  } else {
+    start.opened = studio::open_project(input);
+  }
+  start.autosave = args.bench_frames == 0;
+  return start;
+}
+
 int run(const studio::StudioArgs& args) {
   const bool bench = args.bench_frames > 0;
-  Window window(args.window_width, args.window_height, !bench);
   const auto recent_file = studio::default_recent_file();
   std::vector<std::string> recent = bench ? std::vector<std::string>{} : studio::load_recent(recent_file);
-
-  Project project;
-  std::filesystem::path project_file;
-  bool needs_detection = false;
-  studio::ControllerOptions options;
-  if (bench && args.input.empty()) {
-    const auto folder = std::filesystem::temp_directory_path() / ("fieldlines-bench-" + std::to_string(::getpid()));
-    project = studio::write_bench_scene(folder);
-    project_file = folder / "bench-project.json";
-    options.autosave = false;
-  } else {
-    std::string input = args.input;
-    if (input.empty()) {
-      // The most recent project that still exists, else the demo.
-      for (const auto& r : recent) {
-        if (std::filesystem::exists(r)) {
-          input = r;
-          break;
-        }
-      }
-      // The built-in demo project (core, shared with `fieldlines synth --demo`): 30 synthetic
-      // frames over every lighting condition, some pre-labelled, generated on first use.
-      if (input.empty()) input = ensure_demo().string();
-    }
-    if (studio::has_video_extension(input) && std::filesystem::is_regular_file(input)) {
-      input = frames_of_video(window.get(), input, args.video_every).string();
-    }
-    auto opened = studio::open_project(input);
-    project = std::move(opened.project);
-    project_file = opened.file;
-    needs_detection = opened.needs_detection;
-    if (!bench) {
-      studio::remember(recent, std::filesystem::absolute(project_file).string());
-      studio::save_recent(recent_file, recent);
-    }
+  Startup start = resolve_startup(args, recent);
+  Window window(args.window_width, args.window_height, !bench);
+  if (!start.video.empty()) {
+    start.opened = studio::open_project(frames_of_video(window.get(), start.video, args.video_every));
   }
-  if (bench) options.autosave = false;
+  Project project = std::move(start.opened.project);
+  const std::filesystem::path project_file = start.opened.file;
+  const bool needs_detection = start.opened.needs_detection;
+  studio::ControllerOptions options;
+  options.autosave = start.autosave;
+  if (!bench) {
+    studio::remember(recent, std::filesystem::absolute(project_file).string());
+    studio::save_recent(recent_file, recent);
+  }
 
   // Behind a pointer so that opening a recent project can replace the whole session.
   auto session = std::make_unique<studio::StudioController>(std::move(project), project_file, options);

@@ -16,6 +16,14 @@ namespace {
 
 std::string errno_text() { return std::strerror(errno); }
 
+// ".NAME.tmp": hidden, beside the target, so the rename stays within one file system.
+std::string temporary_prefix(const std::filesystem::path& path) {
+  std::string prefix = ".";
+  prefix += path.filename().string();
+  prefix += ".tmp";
+  return prefix;
+}
+
 // Closes the descriptor and removes the temporary file unless the rename succeeded.
 class TempFile {
  public:
@@ -53,11 +61,7 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
   // A random suffix keeps concurrent savers (two studio windows) from sharing a temporary file.
   std::random_device rd;
-  const std::string suffix = ".tmp" + std::to_string(rd() % 1000000);
-  std::string tmp_name = ".";
-  tmp_name += path.filename().string();
-  tmp_name += suffix;
-  TempFile tmp(dir / tmp_name);
+  TempFile tmp(dir / (temporary_prefix(path) + std::to_string(rd() % 1000000)));
   if (tmp.fd() < 0) throw Error("cannot save '" + path.string() + "': " + errno_text());
   const char* data = contents.data();
   std::size_t left = contents.size();
@@ -82,6 +86,24 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
     ::fsync(dfd);
     ::close(dfd);
   }
+}
+
+int remove_stale_temporaries(const std::filesystem::path& path, std::filesystem::file_time_type::duration min_age) {
+  namespace fs = std::filesystem;
+  const fs::path dir = path.has_parent_path() ? path.parent_path() : ".";
+  const std::string prefix = temporary_prefix(path);
+  const auto now = fs::file_time_type::clock::now();
+  int removed = 0;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() || name.rfind(prefix, 0) != 0) continue;
+    if (name.find_first_not_of("0123456789", prefix.size()) != std::string::npos) continue;
+    std::error_code e;
+    const auto written = fs::last_write_time(it->path(), e);
+    if (!e && now - written >= min_age && fs::remove(it->path(), e)) ++removed;
+  }
+  return removed;
 }
 
 std::string read_file(const std::filesystem::path& path) {

@@ -1,9 +1,15 @@
 // The studio's controller without a window: labelling, undo/redo, autosave, thresholds, metrics.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <vector>
 
+#include "fieldlines/atomic_file.hpp"
 #include "fieldlines/dataset.hpp"
 #include "fieldlines/error.hpp"
 #include "fixtures.hpp"
@@ -234,4 +240,54 @@ TEST(StudioController, ExportAndImportRobotThresholds) {
   s.controller.import_thresholds(out);
   EXPECT_FLOAT_EQ(s.controller.thresholds().marking.thresholds.max_angle_deg, 33);
   EXPECT_THROW(s.controller.import_thresholds(s.dir.path() / "nope.json"), fieldlines::Error);
+}
+
+// A full disk while autosaving (simulated in a child process with RLIMIT_FSIZE, SIGXFSZ
+// ignored): the save fails with a message, the file on disk stays the previous complete version,
+// the edit stays in memory, and the next save once space is back writes every label.
+TEST(StudioController, FullDiskAutosaveKeepsThePreviousFileAndRecovers) {
+  Session s(2, 6);
+  const std::string before = fieldlines::read_file(s.file);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    int failures = 0;
+    const auto check = [&](bool ok) { failures += ok ? 0 : 1; };
+    ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit tight{1024, RLIM_INFINITY};  // smaller than the project: every save must fail
+    ::setrlimit(RLIMIT_FSIZE, &tight);
+    const std::size_t one[] = {1};
+    check(s.controller.label(one, Label::Marking));
+    check(!s.controller.save_error().empty());
+    check(fieldlines::read_file(s.file) == before);
+    check(s.controller.segments()[1].label == Label::Marking);
+    const rlimit room{RLIM_INFINITY, RLIM_INFINITY};
+    ::setrlimit(RLIMIT_FSIZE, &room);
+    const std::size_t two[] = {2};
+    check(s.controller.label(two, Label::Boundary));
+    check(s.controller.save_error().empty());
+    const auto disk = Project::load(s.file);
+    check(disk.images[0].segments[1].label == Label::Marking);
+    check(disk.images[0].segments[2].label == Label::Boundary);
+    ::_exit(failures);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "the child died from a signal";
+  EXPECT_EQ(WEXITSTATUS(status), 0) << WEXITSTATUS(status) << " checks failed";
+  const auto disk = s.on_disk();  // the child's recovered save, seen from here
+  EXPECT_EQ(disk.images[0].segments[1].label, Label::Marking);
+  EXPECT_EQ(disk.images[0].segments[2].label, Label::Boundary);
+}
+
+TEST(StudioController, ExportToAnUnwritablePathIsAnErrorAndImportOfGarbageChangesNothing) {
+  Session s;
+  fieldlines::write_file_atomically(s.dir.path() / "plain-file", "x");
+  EXPECT_THROW(s.controller.export_thresholds(s.dir.path() / "plain-file" / "robot.json"), fieldlines::Error);
+  const auto thresholds = s.controller.thresholds();
+  for (const std::string text : {"{", "{\"format\": \"fieldlines-thresholds\", \"version\": 99}", "[]",
+                                 "{\"format\": \"fieldlines-thresholds\", \"version\": 1, \"marking\": {\"min_projection\": NaN}}"}) {
+    fieldlines::write_file_atomically(s.dir.path() / "bad.json", text);
+    EXPECT_THROW(s.controller.import_thresholds(s.dir.path() / "bad.json"), fieldlines::Error) << text;
+    EXPECT_FLOAT_EQ(s.controller.thresholds().marking.thresholds.max_angle_deg, thresholds.marking.thresholds.max_angle_deg);
+  }
 }

@@ -1,6 +1,10 @@
 // Small studio parts: overlay styles and legend, frame statistics, command line, recent list.
 #include <gtest/gtest.h>
 
+#include <chrono>
+
+#include "fieldlines/atomic_file.hpp"
+
 #include "fieldlines/error.hpp"
 #include "fixtures.hpp"
 #include "frame_stats.hpp"
@@ -100,7 +104,12 @@ TEST(OpenProject, FolderGetsAProjectFileAndIsReopened) {
   EXPECT_TRUE(opened.needs_detection);
   ASSERT_EQ(opened.project.images.size(), 2u);
   EXPECT_EQ(opened.project.images[0].path, "img_00.png");
+  // A save killed mid-write an hour ago left its temporary file: reopening clears it.
+  const auto debris = dir.path() / (std::string(".") + fs::kFolderProjectName + ".tmp4242");
+  fieldlines::write_file_atomically(debris, "{\"half");
+  std::filesystem::last_write_time(debris, std::filesystem::file_time_type::clock::now() - std::chrono::hours(1));
   EXPECT_EQ(fs::open_project(opened.file).project.images.size(), 2u);
+  EXPECT_FALSE(std::filesystem::exists(debris));
   EXPECT_THROW(fs::open_project(dir.path() / "nope"), fieldlines::Error);
   studio_test::TempDir empty("empty");
   EXPECT_THROW(fs::open_project(empty.path()), fieldlines::Error);

@@ -2,6 +2,7 @@
 
 #include <system_error>
 
+#include "fieldlines/atomic_file.hpp"
 #include "fieldlines/error.hpp"
 #include "fieldlines/image_io.hpp"
 
@@ -38,6 +39,8 @@ OpenedProject open_project(const std::filesystem::path& path) {
   } else {
     throw Error(path.string() + ": no such project file or image folder");
   }
+  // Hidden debris of saves killed mid-write (crash, SIGKILL); the project itself is intact.
+  remove_stale_temporaries(out.file);
   for (const ImageEntry& image : out.project.images) out.needs_detection |= image.segments.empty() && image.detect_ms == 0;
   return out;
 }

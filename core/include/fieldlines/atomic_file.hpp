@@ -1,5 +1,6 @@
 #pragma once
 // Crash-safe file replacement: a save either fully happens or leaves the old file untouched.
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -10,6 +11,12 @@ namespace fieldlines {
 // over `path` (rename is atomic within one file system). Throws fieldlines::Error naming the path
 // when any step fails; the temporary file is removed on failure.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
+
+// Removes the temporary files that saves of `path` killed mid-write (SIGKILL, power cut) left
+// beside it, when older than `min_age` (a younger one may belong to a save in progress).
+// Best effort, never throws; returns how many were removed.
+int remove_stale_temporaries(const std::filesystem::path& path,
+                             std::filesystem::file_time_type::duration min_age = std::chrono::minutes(1));
 
 // Reads a whole file; throws fieldlines::Error naming the path when it cannot be read.
 std::string read_file(const std::filesystem::path& path);
