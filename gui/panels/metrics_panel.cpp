@@ -41,7 +41,8 @@ void draw_metrics_panel(studio::StudioController& controller, UiState& ui) {
     const auto history = ui.frame_stats->history_ms();
     ImGui::Text("UI frame: median %.2f ms, last %.2f ms", ui.frame_stats->median_ms(), ui.frame_stats->last_ms());
     if (!history.empty()) {
-      ImGui::PlotLines("##frames", history.data(), static_cast<int>(history.size()), 0, "frame ms", 0, 33, {-1, 80});
+      ImGui::PlotLines("##frames", history.data(), static_cast<int>(history.size()), 0, "frame ms", 0, 33,
+                       {ImGui::GetContentRegionAvail().x, 80});
     }
   }
 }

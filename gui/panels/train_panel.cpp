@@ -1,5 +1,6 @@
 // Train tab: PSO settings, Start/Stop, live best-score plot and particle scatter, results, Apply.
 #include <algorithm>
+#include <cstdio>
 #include <utility>
 #include <vector>
 
@@ -70,16 +71,21 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
   }
 
   if (const auto& snap = job.latest()) {
-    ImGui::Text("iteration %d / %d   best %.3f   elapsed %.1f s   ETA %.1f s", snap->iteration, snap->iterations,
+    ImGui::Text("iteration %d/%d  best %.3f  %.1f s  ETA %.1f s", snap->iteration, snap->iterations,
                 snap->best_score, snap->elapsed_s, job.running() ? snap->eta_s : 0.0);
     ImGui::ProgressBar(snap->iterations ? static_cast<float>(snap->iteration) / static_cast<float>(snap->iterations) : 0,
                        {-1, 0});
-    std::vector<float> scores(job.best_scores().begin(), job.best_scores().end());
-    // Explicit, padded range: a flat curve (converged at once) would otherwise not be drawn.
-    const auto [lo, hi] = std::minmax_element(scores.begin(), scores.end());
-    const float pad = std::max(1e-3f, (*hi - *lo) * 0.1f);
-    ImGui::PlotLines("##best", scores.data(), static_cast<int>(scores.size()), 0, "best score per iteration",
-                     *lo - pad, *hi + pad, {-1, 90});
+    const std::vector<float> scores(job.best_scores().begin(), job.best_scores().end());
+    if (!scores.empty()) {
+      // Explicit, padded range: a flat curve (converged at once) would otherwise not be drawn.
+      const auto [lo, hi] = std::minmax_element(scores.begin(), scores.end());
+      const float pad = std::max(1e-3f, (*hi - *lo) * 0.1f);
+      char overlay[96];
+      std::snprintf(overlay, sizeof overlay, "best score per iteration: %.4g -> %.4g", scores.front(), scores.back());
+      // Explicit width: this ImGui's PlotLines takes no negative ("fill") size and draws nothing.
+      ImGui::PlotLines("##best", scores.data(), static_cast<int>(scores.size()), 0, overlay, *lo - pad, *hi + pad,
+                       {ImGui::GetContentRegionAvail().x, 90});
+    }
     ImGui::Combo("x", &ui.scatter_x, kDims, IM_ARRAYSIZE(kDims));
     ImGui::Combo("y", &ui.scatter_y, kDims, IM_ARRAYSIZE(kDims));
     draw_scatter(*snap, ui.scatter_x, ui.scatter_y);
