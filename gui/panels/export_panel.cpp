@@ -42,9 +42,19 @@ void folder_browser(std::string& path) {
 void draw_export_panel(studio::StudioController& controller, UiState& ui) {
   const Thresholds& t = controller.thresholds();
   ImGui::TextUnformatted("Current thresholds");
-  for (const auto& [name, c] : {std::pair{"marking", t.marking.thresholds}, std::pair{"boundary", t.boundary.thresholds}}) {
-    ImGui::Text("%-8s projection >= %.2f  angle <= %.2f  length >= %.1f", name, c.min_projection, c.max_angle_deg,
-                c.min_length);
+  if (ImGui::BeginTable("thresholds", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) {
+    for (const char* header : {"class", "min projection", "max angle (deg)", "min length"}) ImGui::TableSetupColumn(header);
+    ImGui::TableHeadersRow();
+    for (const auto& [name, c] : {std::pair{"marking", t.marking.thresholds}, std::pair{"boundary", t.boundary.thresholds}}) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(name);
+      for (const float value : {c.min_projection, c.max_angle_deg, c.min_length}) {
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2f", value);
+      }
+    }
+    ImGui::EndTable();
   }
   ImGui::Separator();
   if (ui.export_path.empty() || fs::path(ui.export_path).is_relative()) {
