@@ -1,5 +1,7 @@
 #include "studio_ui.hpp"
 
+#include <cstdio>
+
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -69,7 +71,13 @@ void draw_status_bar(const studio::StudioController& controller, const UiState& 
     ImGui::SameLine();
     ImGui::TextDisabled("  %s", ui.status_message.c_str());
   }
-  if (const std::string detection = controller.detection_report().summary(); !detection.empty()) {
+  if (const studio::DetectionJob& job = controller.detection(); job.running()) {
+    // Visible from every tab: detection of a whole folder takes a while on a laptop.
+    ImGui::SameLine();
+    char overlay[48];
+    std::snprintf(overlay, sizeof overlay, "detecting %zu/%zu", job.done(), job.total());
+    ImGui::ProgressBar(job.progress(), {200, 0}, overlay);
+  } else if (const std::string detection = controller.detection_report().summary(); !detection.empty()) {
     ImGui::SameLine();
     const bool failed = !controller.detection_report().failed.empty();
     ImGui::TextColored(failed ? ImVec4{1, 0.5f, 0.3f, 1} : ImVec4{0.6f, 0.6f, 0.6f, 1}, "  %s", detection.c_str());

@@ -178,18 +178,19 @@ Startup resolve_startup(const studio::StudioArgs& args, const std::vector<std::s
     return start;
   }
   std::string input = args.input;
-  if (input.empty()) {
-    // The most recent project that still exists, else the demo.
+  if (args.last) {
+    // The most recent project that still exists.
     for (const auto& r : recent) {
       if (std::filesystem::exists(r)) {
         input = r;
         break;
       }
     }
-    // The built-in demo project (core, shared with `fieldlines synth --demo`): 30 synthetic
-    // frames over every lighting condition, some pre-labelled, generated on first use.
-    if (input.empty()) input = ensure_demo().string();
+    if (input.empty()) throw Error("--last: no recent project (open a project or folder once first)");
   }
+  // The built-in demo project (core, shared with `fieldlines synth --demo`): 30 synthetic frames
+  // over every lighting condition, some pre-labelled, generated on first use.
+  if (input.empty()) input = ensure_demo().string();
   if (studio::has_video_extension(input) && std::filesystem::is_regular_file(input)) {
     start.video = input;
   } else {
@@ -299,6 +300,10 @@ int main(int argc, char** argv) {
     const auto args = fieldlines::studio::parse_studio_args(std::vector<std::string>(argv + 1, argv + argc));
     if (args.help) {
       std::fputs(fieldlines::studio::studio_usage(), stdout);
+      return 0;
+    }
+    if (args.version) {
+      std::printf("fieldlines-studio %s\n", FIELDLINES_VERSION);
       return 0;
     }
     return run(args);

@@ -19,18 +19,24 @@ int parse_int(const std::string& text, const std::string& option, int lo, int hi
 }  // namespace
 
 const char* studio_usage() {
-  return "usage: fieldlines-studio [PROJECT.json | IMAGE_FOLDER | VIDEO] [--every N] [--window-size WxH]\n"
-         "                         [--bench-frames N]\n"
+  return "usage: fieldlines-studio [PROJECT.json | IMAGE_FOLDER | VIDEO | --last] [--every N] [--window-size WxH]\n"
+         "                         [--bench-frames N] [--version]\n"
          "  PROJECT.json     a studio project (labels are autosaved into it)\n"
          "  IMAGE_FOLDER     images to label; creates IMAGE_FOLDER/fieldlines-project.json\n"
          "  VIDEO            mp4/avi/mkv/mov/webm: every N-th frame (--every, default 10) goes to\n"
          "                   VIDEO_STEM-frames/ next to it, which then opens as an image folder\n"
-         "  (nothing)        reopens the most recent project, else the demo (synthetic pictures)\n"
+         "  (nothing)        the built-in demo: synthetic field pictures, some labelled, made on first use\n"
+         "  --last           reopen the most recent project (also listed in the Images tab)\n"
          "  --window-size    initial window size, default 1280x800\n"
          "  --bench-frames N render N frames as fast as possible, print the median frame time, exit\n"
          "                   (without a project: a 640x480 image with 300 segments)\n"
          "  --state-file F   write the view transform, hovered segment and save count to F as JSON\n"
-         "                   whenever they change (for automated UI tests)\n";
+         "                   whenever they change (for automated UI tests)\n"
+         "examples:\n"
+         "  fieldlines-studio                          # the demo\n"
+         "  fieldlines-studio ~/venue/pictures/        # label a folder of field pictures\n"
+         "  fieldlines-studio match.mp4 --every 15     # every 15th frame of a video\n"
+         "  fieldlines-studio --last                   # carry on where you stopped\n";
 }
 
 StudioArgs parse_studio_args(const std::vector<std::string>& args) {
@@ -43,6 +49,10 @@ StudioArgs parse_studio_args(const std::vector<std::string>& args) {
     };
     if (a == "-h" || a == "--help") {
       out.help = true;
+    } else if (a == "--version") {
+      out.version = true;
+    } else if (a == "--last") {
+      out.last = true;
     } else if (a == "--bench-frames") {
       out.bench_frames = parse_int(value(), a, 1, 1'000'000);
     } else if (a == "--window-size") {
@@ -63,6 +73,7 @@ StudioArgs parse_studio_args(const std::vector<std::string>& args) {
       throw Error("only one project or folder can be opened, got '" + out.input + "' and '" + a + "'");
     }
   }
+  if (out.last && !out.input.empty()) throw Error("--last reopens the most recent project; do not name one too");
   return out;
 }
 

@@ -7,12 +7,14 @@
 namespace fieldlines::studio {
 
 struct StudioArgs {
-  std::string input;          // project file, image folder or video; empty: the most recent project
+  std::string input;          // project file, image folder or video; empty: the demo (or --last)
+  bool last = false;          // reopen the most recent project instead of the demo
   int window_width = 1280, window_height = 800;
   int bench_frames = 0;       // > 0: render this many frames, print the median frame time, exit
   int video_every = 10;       // a video opens as every n-th frame
   std::string state_file;     // automation: write the UI state (view, hover, saves) here as JSON
   bool help = false;
+  bool version = false;
 };
 
 // Throws fieldlines::Error on an unknown option or a bad value.

@@ -7,13 +7,17 @@
 namespace fieldlines::gui {
 
 namespace {
-bool class_sliders(const char* name, ClassThresholds& t) {
+// While a slider is dragged the controller saves after a short pause; releasing it saves at once.
+bool class_sliders(const char* name, ClassThresholds& t, bool& released) {
   bool changed = false;
   ImGui::PushID(name);
   ImGui::TextUnformatted(name);
   changed |= ImGui::SliderFloat("min projection", &t.min_projection, 0, 255, "%.1f");
+  released |= ImGui::IsItemDeactivatedAfterEdit();
   changed |= ImGui::SliderFloat("max angle (deg)", &t.max_angle_deg, 0, 90, "%.1f");
+  released |= ImGui::IsItemDeactivatedAfterEdit();
   changed |= ImGui::SliderFloat("min length", &t.min_length, 0, 400, "%.0f");
+  released |= ImGui::IsItemDeactivatedAfterEdit();
   ImGui::PopID();
   return changed;
 }
@@ -26,30 +30,42 @@ void counts_line(const char* name, const ClassCounts& c) {
 
 void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/) {
   Thresholds t = controller.thresholds();
-  bool changed = class_sliders("marking (white <-> green)", t.marking.thresholds);
+  bool released = false;
+  bool changed = class_sliders("marking (white <-> green)", t.marking.thresholds, released);
   ImGui::Separator();
-  changed |= class_sliders("boundary (black -> green)", t.boundary.thresholds);
+  changed |= class_sliders("boundary (black -> green)", t.boundary.thresholds, released);
   if (ImGui::Button("Reset to defaults")) {
     t = Thresholds{};
-    changed = true;
+    changed = released = true;
   }
   if (changed) controller.set_thresholds(t);
+  if (released) controller.flush();
   ImGui::Separator();
-  ImGui::TextUnformatted("All labelled data (train split):");
+  ImGui::TextUnformatted("Labelled data with these thresholds, train split:");
   counts_line("marking", controller.train_counts().marking);
   counts_line("boundary", controller.train_counts().boundary);
+  ImGui::TextDisabled("test split (every 5th image):");
+  counts_line("marking", controller.test_counts().marking);
+  counts_line("boundary", controller.test_counts().boundary);
 
   ImGui::Separator();
   ImGui::TextUnformatted("Detector (applies to the next detection)");
   DetectorParams p = controller.detector_params();
+  released = false;
   ImGui::SliderInt("gradient threshold", &p.gradient_threshold, 1, 255);
+  released |= ImGui::IsItemDeactivatedAfterEdit();
   ImGui::SliderInt("anchor threshold", &p.anchor_threshold, 0, 64);
+  released |= ImGui::IsItemDeactivatedAfterEdit();
   ImGui::SliderInt("min line length", &p.min_line_length, 5, 200);
+  released |= ImGui::IsItemDeactivatedAfterEdit();
   float sigma = static_cast<float>(p.gaussian_sigma);
   if (ImGui::SliderFloat("gaussian sigma", &sigma, 0.1f, 5)) p.gaussian_sigma = sigma;
+  released |= ImGui::IsItemDeactivatedAfterEdit();
   float validation = static_cast<float>(p.validation_threshold);
   if (ImGui::SliderFloat("validation (rad)", &validation, 0.01f, 1)) p.validation_threshold = validation;
+  released |= ImGui::IsItemDeactivatedAfterEdit();
   controller.set_detector_params(p);
+  if (released) controller.flush();
   studio::DetectionJob& job = controller.detection();
   if (job.running()) {
     ImGui::ProgressBar(job.progress(), {-1, 0});

@@ -101,6 +101,9 @@ TEST(TrainingJob, RunsToTheEndAndReportsEveryIteration) {
 
   ASSERT_TRUE(c.apply_training_result());
   EXPECT_EQ(c.thresholds(), outcome->result.thresholds);
+  // Applying is saved at once (no poll, no pause): a crash right after loses nothing.
+  EXPECT_FALSE(c.has_unsaved_settings());
+  EXPECT_EQ(fieldlines::Project::load(data.file).thresholds, outcome->result.thresholds);
   EXPECT_LT(c.train_counts().marking.fn, missed);  // live metrics follow the applied thresholds
 }
 

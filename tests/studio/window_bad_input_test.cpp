@@ -75,6 +75,9 @@ TEST_F(StudioBadInput, FolderWithoutImagesAndBadOptionsAreMessages) {
   r = run_studio({"--every", "0", (dir() / "empty").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("--every: expected an integer"), std::string::npos) << r.output;
+  r = run_studio({"--last"});  // a private config folder: nothing opened before
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("--last: no recent project"), std::string::npos) << r.output;
   r = run_studio({"--frobnicate"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("unknown option --frobnicate"), std::string::npos) << r.output;

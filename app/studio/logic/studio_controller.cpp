@@ -330,6 +330,7 @@ bool StudioController::apply_training_result() {
   const auto& outcome = training_.outcome();
   if (!outcome || !outcome->error.empty()) return false;
   set_thresholds(outcome->result.thresholds);
+  flush();  // a deliberate act, not a drag: on disk at once
   return true;
 }
 

@@ -111,6 +111,7 @@ class StudioController {
   void set_detector_params(const DetectorParams& params);
   void detect_all(bool only_undetected = true);
   DetectionJob& detection() { return detection_; }
+  const DetectionJob& detection() const { return detection_; }
   const DetectionReport& detection_report() const { return detection_report_; }
   // The reason the image's last detection failed, or empty.
   const std::string& detection_error(std::size_t index) const;
