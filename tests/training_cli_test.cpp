@@ -1,4 +1,5 @@
 // `fieldlines train`, `eval` and `sweep` end to end through the built CLI.
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -83,9 +84,14 @@ TEST_F(Cli, TrainWritesAValidThresholdsFileThatEvalReads) {
       for (const char* k : {"tp", "fp", "fn", "precision", "recall"}) EXPECT_TRUE(p[part][cls].contains(k)) << part << cls << k;
   EXPECT_GT(p["train"]["marking"]["recall"].get<double>(), 0.9);
   // Same seed, same file content apart from the date.
+  // --quiet: nothing at all on stderr on success.
   const fs::path again = dir_ / "thr2.json";
-  ASSERT_EQ(run("train " + data.string() + " --seed 3 --particles 20 --iterations 20 -o " + again.string()).code, 0);
+  const CliRun quiet = run("train " + data.string() + " --seed 3 --particles 20 --iterations 20 --quiet -o " + again.string());
+  ASSERT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
+  EXPECT_NE(quiet.out.find("wrote"), std::string::npos);
   EXPECT_EQ(fl::load_thresholds_file(again).thresholds, f.thresholds);
+  EXPECT_FALSE(fl::load_thresholds_file(again).provenance.contains("cross_validation"));
 
   const CliRun e = run("eval " + data.string() + " --thresholds " + out.string() + " --per-image --json " +
                     (dir_ / "eval.json").string());
@@ -142,4 +148,67 @@ TEST_F(Cli, ProjectFilesAreDataToo) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(fl::load_thresholds_file(dir_ / "t1.json").thresholds, fl::load_thresholds_file(dir_ / "t2.json").thresholds);
   EXPECT_TRUE(fl::load_thresholds_file(dir_ / "t2.json").provenance["test"].is_null());
+}
+
+TEST_F(Cli, FoldsCrossValidateIntoTheProvenance) {
+  const fs::path data = csv("a.csv", 300), out = dir_ / "cv.json";
+  const std::string common = " --seed 4 --particles 20 --iterations 20";
+  const CliRun r = run("train " + data.string() + common + " --folds 4 -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* text : {"cross-validation: 4 folds by image", "fold 4", "mean", "std", "training marking"})
+    EXPECT_NE(r.err.find(text), std::string::npos) << text << " not in\n" << r.err;
+  const fl::ThresholdsFile f = fl::load_thresholds_file(out);
+  const nlohmann::json& cv = f.provenance["cross_validation"];
+  EXPECT_EQ(cv["folds"], 4);
+  EXPECT_EQ(cv["split"], "image");
+  EXPECT_EQ(cv["seed"], 4);
+  EXPECT_FALSE(cv.contains("boundary"));  // only the trained class
+  ASSERT_EQ(cv["test_segments"].size(), 4u);
+  long tested = 0;
+  for (const auto& n : cv["test_segments"]) tested += n.get<long>();
+  EXPECT_EQ(tested, 300);  // every row is tested exactly once
+  const nlohmann::json& m = cv["marking"];
+  for (const char* key : {"precision", "recall"}) {
+    ASSERT_EQ(m[key].size(), 4u) << key;
+    double sum = 0, ss = 0;
+    for (const auto& v : m[key]) {
+      EXPECT_TRUE(v.get<double>() >= 0 && v.get<double>() <= 1) << key;
+      sum += v.get<double>();
+    }
+    const double mean = sum / 4;
+    for (const auto& v : m[key]) ss += (v.get<double>() - mean) * (v.get<double>() - mean);
+    EXPECT_NEAR(m[std::string("mean_") + key].get<double>(), mean, 1e-12) << key;
+    EXPECT_NEAR(m[std::string("std_") + key].get<double>(), std::sqrt(ss / 3), 1e-12) << key;
+  }
+  EXPECT_GT(m["mean_recall"].get<double>(), 0.8);
+  EXPECT_EQ(m["pooled"]["tp"].get<long>() + m["pooled"]["fn"].get<long>(), 100);  // all markings, once
+  // The final thresholds are trained as without --folds.
+  ASSERT_EQ(run("train " + data.string() + common + " --quiet -o " + (dir_ / "plain.json").string()).code, 0);
+  EXPECT_EQ(fl::load_thresholds_file(dir_ / "plain.json").thresholds, f.thresholds);
+
+  // Both classes, row split: one entry per class; quiet prints nothing.
+  const CliRun both = run("train " + data.string() + common +
+                          " --folds 25 --split row --class both --quiet -o " + (dir_ / "both.json").string());
+  ASSERT_EQ(both.code, 0) << both.err;
+  EXPECT_EQ(both.err, "");
+  const nlohmann::json cv2 = fl::load_thresholds_file(dir_ / "both.json").provenance["cross_validation"];
+  EXPECT_EQ(cv2["split"], "row");
+  for (const char* cls : {"marking", "boundary"}) EXPECT_EQ(cv2[cls]["recall"].size(), 25u) << cls;
+}
+
+TEST_F(Cli, BadFoldsFailBeforeWritingAnything) {
+  const fs::path data = csv("a.csv", 30), out = dir_ / "t.json";  // 30 rows on 20 images
+  const std::pair<const char*, const char*> bad[] = {
+      {"--folds 1", "--folds: expected a whole number in [2, 50], got '1'"},
+      {"--folds 51", "--folds: expected a whole number in [2, 50], got '51'"},
+      {"--folds five", "--folds: expected a whole number"},
+      {"--folds 21", "--folds 21: the data has only 20 images"},
+      {"--folds 31 --split row", "--folds 31: the data has only 30 labelled rows"},
+  };
+  for (const auto& [opts, message] : bad) {
+    const CliRun r = run("train " + data.string() + " --iterations 5 " + opts + " -o " + out.string());
+    EXPECT_EQ(r.code, 2) << opts;
+    EXPECT_NE(r.err.find(message), std::string::npos) << opts << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << opts;
+  }
 }

@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "args.hpp"
 #include "commands.hpp"
@@ -25,7 +28,10 @@ constexpr const char* kHelp = R"(usage: fieldlines train DATA... -o FILE [option
 Trains the classification thresholds on labelled segments and writes the thresholds file
 (schema: docs/training.md). DATA is a labelling project file or a reference annotation CSV;
 several are pooled. The data is split into train and test parts; the file's provenance records
-both parts' precision and recall. Progress on stderr, a summary on stdout.
+both parts' precision and recall. With --folds K, a K-fold cross-validation with the same
+options runs first: its per-fold test precision/recall, mean and standard deviation go to stderr
+and to the provenance ("cross_validation"); the thresholds written are then trained as without
+it. Progress on stderr, a summary on stdout.
 
 options:
   -o, --output FILE    the thresholds file to write (required)
@@ -33,6 +39,8 @@ options:
   --train-fraction F   share of images/rows used for training, (0, 1] (default 0.7;
                        1 trains on everything and leaves no test part)
   --seed S             seed of the split and of PSO (default 1)
+  --folds K            cross-validate over K folds first: 2..50, at most the number of
+                       images (of rows with --split row); split and seeded like the above
 )";
 
 constexpr const char* kExamples = R"(
@@ -41,6 +49,7 @@ examples:
   fieldlines train D1_ssl_natural_light.csv --split row --train-fraction 0.4 --seed 3 -o t.json
   fieldlines train a.csv b.csv --class both --objective fbeta:0.5 -o both.json
   fieldlines train field.csv --protocol paper --train-fraction 1 -o paper.json
+  fieldlines train D1_ssl_natural_light.csv --folds 5 -o t.json
 )";
 
 std::string utc_now() {
@@ -58,14 +67,33 @@ nlohmann::json bounds_json(const ThresholdBounds& b) {
           {"min_length", {b.length.lo, b.length.hi}}};
 }
 
+// K-fold cross-validation of `spec` on `all` (the same split mode and seed as the final split):
+// each fold trains on its train part and is counted on its test part.
+CrossValidation cross_validate(const LabelledSet& all, const Thresholds& start, const ProtocolSpec& spec, int k,
+                               std::uint64_t seed, bool quiet) {
+  CrossValidation cv;
+  cv.split = spec.split;
+  cv.seed = seed;
+  cv.target = spec.train.target;
+  const std::vector<Split> folds = k_fold(all, spec.split, k, seed);
+  Progress progress("cross-validation", folds.size() * static_cast<std::size_t>(spec.train.pso.iterations), stderr,
+                    {quiet ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
+  for (const Split& fold : folds) {
+    const LabelledSet train_set = all.subset(fold.train), test_set = all.subset(fold.test);
+    const TrainResult r = train(train_set.segments, start, spec.train, [&](const TrainingProgress&) { progress.advance(); });
+    cv.folds.push_back({train_set.size(), test_set.size(), evaluate(test_set, r.thresholds).total});
+  }
+  return cv;
+}
+
 }  // namespace
 
 int cmd_train(const Args& args) {
   std::set<std::string> values = training_value_options();
-  values.insert({"-o", "--output", "--split", "--train-fraction", "--seed"});
+  values.insert({"-o", "--output", "--split", "--train-fraction", "--seed", "--folds"});
   const ParsedArgs a(args, values, {"-h", "--help", "--quiet"});
   if (a.flag("-h") || a.flag("--help")) {
-    std::printf("%s%s  --quiet              no progress on stderr\n%s", kHelp, kTrainingOptionsHelp, kExamples);
+    std::printf("%s%s  --quiet              nothing on stderr but errors\n%s", kHelp, kTrainingOptionsHelp, kExamples);
     return 0;
   }
   const auto output = a.has("-o") ? a.value("-o") : a.value("--output");
@@ -96,18 +124,35 @@ int cmd_train(const Args& args) {
   const double fraction = a.double_or("--train-fraction", 0.7, 1e-9, 1.0);
   const int seed = a.int_or("--seed", 1, 0, 2147483647);
   spec.train.pso.seed = static_cast<std::uint64_t>(seed);
-
+  const int folds = a.int_or("--folds", 0, 2, 50);  // 0: no cross-validation
+  const bool quiet = a.flag("--quiet");
+  if (folds > 0) {
+    // Checked here rather than by k_fold so the message names the option and the way out.
+    const bool by_row = spec.split == SplitMode::ByRow;
+    const std::size_t units = by_row ? all.size() : all.images.size();
+    if (static_cast<std::size_t>(folds) > units)
+      throw Error("--folds " + std::to_string(folds) + ": the data has only " + std::to_string(units) +
+                  (by_row ? " labelled rows" : " images (--split image)") + ", so at most " +
+                  std::to_string(units) + " folds" + (by_row ? "" : "; --split row splits by row"));
+  }
   const Split split = split_train_test(all, spec.split, fraction, static_cast<std::uint64_t>(seed));
   const LabelledSet train_set = all.subset(split.train), test_set = all.subset(split.test);
-  std::fprintf(stderr, "training %s on %zu segments (%zu images), testing on %zu segments\n",
-               std::string(to_string(spec.train.target)).c_str(), train_set.size(), train_set.images.size(),
-               test_set.size());
+  std::optional<CrossValidation> cv;
+  if (folds > 0) {
+    cv = cross_validate(all, start, spec, folds, static_cast<std::uint64_t>(seed), quiet);
+    if (!quiet) print_cross_validation(stderr, *cv);
+  }
+
+  if (!quiet)
+    std::fprintf(stderr, "training %s on %zu segments (%zu images), testing on %zu segments\n",
+                 std::string(to_string(spec.train.target)).c_str(), train_set.size(), train_set.images.size(),
+                 test_set.size());
 
   const auto t0 = std::chrono::steady_clock::now();
   TrainResult r;
   {
     Progress progress("PSO", static_cast<std::size_t>(spec.train.pso.iterations), stderr,
-                      {a.flag("--quiet") ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
+                      {quiet ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
     r = train(train_set.segments, start, spec.train, [&](const TrainingProgress&) { progress.advance(); });
   }
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -147,6 +192,7 @@ int cmd_train(const Args& args) {
   p["fieldlines_version"] = FIELDLINES_VERSION;
   p["train"] = counts_json(train_counts);
   p["test"] = test_counts ? counts_json(*test_counts) : nlohmann::json(nullptr);
+  if (cv) p["cross_validation"] = cross_validation_json(*cv);
   save_thresholds_file(*output, file);
 
   const auto show = [](const char* name, const ColourClass& c) {

@@ -1,6 +1,19 @@
 #include "training_report.hpp"
 
+#include <cmath>
+
 namespace fieldlines::cli {
+namespace {
+
+// The classes a cross-validation reports: the trained one, or both.
+std::vector<std::pair<const char*, ClassCounts Counts::*>> reported_classes(TrainClass target) {
+  std::vector<std::pair<const char*, ClassCounts Counts::*>> out;
+  if (target != TrainClass::Boundary) out.emplace_back("marking", &Counts::marking);
+  if (target != TrainClass::Marking) out.emplace_back("boundary", &Counts::boundary);
+  return out;
+}
+
+}  // namespace
 
 nlohmann::json class_json(const ClassCounts& c) {
   return {{"tp", c.tp}, {"fp", c.fp}, {"fn", c.fn}, {"precision", c.precision()}, {"recall", c.recall()}, {"f1", c.f1()}};
@@ -23,6 +36,81 @@ void print_counts(std::FILE* out, const std::string& label, const Counts& c) {
   for (const ClassCounts* k : {&c.marking, &c.boundary})
     std::fprintf(out, "  %5ld %5ld %5ld %5.3f %5.3f %5.3f", k->tp, k->fp, k->fn, k->precision(), k->recall(), k->f1());
   std::fprintf(out, "\n");
+}
+
+MeanStd mean_std(std::span<const double> values) {
+  MeanStd r;
+  if (values.empty()) return r;
+  for (const double v : values) r.mean += v;
+  r.mean /= static_cast<double>(values.size());
+  if (values.size() < 2) return r;
+  double ss = 0;
+  for (const double v : values) ss += (v - r.mean) * (v - r.mean);
+  r.std = std::sqrt(ss / static_cast<double>(values.size() - 1));
+  return r;
+}
+
+nlohmann::json cross_validation_json(const CrossValidation& cv) {
+  nlohmann::json j;
+  j["folds"] = cv.folds.size();
+  j["split"] = to_string(cv.split);
+  j["seed"] = cv.seed;
+  j["train_segments"] = nlohmann::json::array();
+  j["test_segments"] = nlohmann::json::array();
+  for (const FoldResult& f : cv.folds) {
+    j["train_segments"].push_back(f.train_segments);
+    j["test_segments"].push_back(f.test_segments);
+  }
+  for (const auto& [name, member] : reported_classes(cv.target)) {
+    std::vector<double> precision, recall, f1;
+    ClassCounts pooled;
+    for (const FoldResult& f : cv.folds) {
+      const ClassCounts& c = f.test.*member;
+      precision.push_back(c.precision());
+      recall.push_back(c.recall());
+      f1.push_back(c.f1());
+      pooled += c;
+    }
+    const MeanStd p = mean_std(precision), r = mean_std(recall);
+    j[name] = {{"precision", precision}, {"recall", recall},        {"f1", f1},
+               {"mean_precision", p.mean}, {"mean_recall", r.mean}, {"std_precision", p.std},
+               {"std_recall", r.std},     {"pooled", class_json(pooled)}};
+  }
+  return j;
+}
+
+void print_cross_validation(std::FILE* out, const CrossValidation& cv) {
+  const auto classes = reported_classes(cv.target);
+  std::fprintf(out, "cross-validation: %zu folds by %s, seed %llu; test part of each fold\n", cv.folds.size(),
+               std::string(to_string(cv.split)).c_str(), static_cast<unsigned long long>(cv.seed));
+  std::fprintf(out, "%-7s %8s %8s", "", "train", "test");
+  for (const auto& c : classes) std::fprintf(out, "  %-8s %5s %5s", c.first, "P", "R");
+  std::fprintf(out, "\n");
+  for (std::size_t i = 0; i < cv.folds.size(); ++i) {
+    const FoldResult& f = cv.folds[i];
+    std::fprintf(out, "fold %-2zu %8zu %8zu", i + 1, f.train_segments, f.test_segments);
+    for (const auto& c : classes)
+      std::fprintf(out, "  %-8s %5.3f %5.3f", "", (f.test.*c.second).precision(), (f.test.*c.second).recall());
+    std::fprintf(out, "\n");
+  }
+  const auto summary = [&](const char* label, auto pick) {
+    std::fprintf(out, "%-7s %8s %8s", label, "", "");
+    for (const auto& c : classes) {
+      std::vector<double> p, r;
+      ClassCounts pooled;
+      for (const FoldResult& f : cv.folds) {
+        p.push_back((f.test.*c.second).precision());
+        r.push_back((f.test.*c.second).recall());
+        pooled += f.test.*c.second;
+      }
+      const auto [pv, rv] = pick(mean_std(p), mean_std(r), pooled);
+      std::fprintf(out, "  %-8s %5.3f %5.3f", "", pv, rv);
+    }
+    std::fprintf(out, "\n");
+  };
+  summary("mean", [](MeanStd p, MeanStd r, const ClassCounts&) { return std::pair{p.mean, r.mean}; });
+  summary("std", [](MeanStd p, MeanStd r, const ClassCounts&) { return std::pair{p.std, r.std}; });
+  summary("pooled", [](MeanStd, MeanStd, const ClassCounts& c) { return std::pair{c.precision(), c.recall()}; });
 }
 
 }  // namespace fieldlines::cli
