@@ -2,9 +2,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <set>
 #include <thread>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -337,17 +339,20 @@ TEST(TrainingShared, MatchesBruteForceOnASampleOfRealRows) {
 }
 
 // Table 3 at a 40% row split, median of 10 seeds: the paper's protocol lands near its published
-// figures, and ours gains at least 0.10 recall for at most 0.03 precision on every file.
+// figures, and ours gains at least 0.10 recall for at most 0.03 precision on every file: against
+// the published figure where there is one (D1-D4) and against the paper's protocol reproduced
+// here on the same splits everywhere (ssl_navigation has no published figure).
 TEST(TrainingShared, DefaultProtocolBeatsThePapersAtFortyPercent) {
   FIELDLINES_REQUIRE_SHARED("data/elsed-ssl/annotations", dir);
   struct Published {
     const char* file;
-    double precision, recall;
+    std::optional<std::pair<double, double>> figure;  // precision, recall; none for nav
   };
-  const Published published[] = {{"D1_ssl_natural_light.csv", 0.98, 0.80},
-                                 {"D2_ssl_mixed_light.csv", 0.99, 0.82},
-                                 {"D3_ssl_artificial_light.csv", 0.98, 0.80},
-                                 {"D4_humanoid_kid.csv", 0.96, 0.56}};
+  const Published published[] = {{"D1_ssl_natural_light.csv", {{0.98, 0.80}}},
+                                 {"D2_ssl_mixed_light.csv", {{0.99, 0.82}}},
+                                 {"D3_ssl_artificial_light.csv", {{0.98, 0.80}}},
+                                 {"D4_humanoid_kid.csv", {{0.96, 0.56}}},
+                                 {"ssl_navigation.csv", std::nullopt}};
   for (const Published& pub : published) {
     const fl::LabelledSet set = fl::labelled_set_from_rows(fl::read_reference_csv(dir / pub.file));
     fl::SweepParams sp;
@@ -357,10 +362,13 @@ TEST(TrainingShared, DefaultProtocolBeatsThePapersAtFortyPercent) {
     const fl::SweepCell paper = fl::run_sweep(set, sp)[0];
     sp.train = fl::protocol_spec(fl::Protocol::Ours).train;
     const fl::SweepCell ours = fl::run_sweep(set, sp)[0];
-    EXPECT_NEAR(paper.median_precision, pub.precision, 0.05) << pub.file;
-    EXPECT_NEAR(paper.median_recall, pub.recall, 0.10) << pub.file;
-    EXPECT_GE(ours.median_recall, pub.recall + 0.10) << pub.file;
-    EXPECT_GE(ours.median_precision, pub.precision - 0.03) << pub.file;
+    if (pub.figure) {
+      const auto [precision, recall] = *pub.figure;
+      EXPECT_NEAR(paper.median_precision, precision, 0.05) << pub.file;
+      EXPECT_NEAR(paper.median_recall, recall, 0.10) << pub.file;
+      EXPECT_GE(ours.median_recall, recall + 0.10) << pub.file;
+      EXPECT_GE(ours.median_precision, precision - 0.03) << pub.file;
+    }
     EXPECT_GE(ours.median_recall, paper.median_recall + 0.10) << pub.file;
     EXPECT_GE(ours.median_precision, paper.median_precision - 0.03) << pub.file;
   }
