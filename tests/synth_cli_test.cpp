@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "shared_data.hpp"
 
@@ -72,6 +73,26 @@ TEST_F(SynthCli, BadOptionsAreUsageErrors) {
   EXPECT_EQ(run("synth --scene ssl --n 1 --seed 1 --condition foggy" + o, dir_).code, 2);
   EXPECT_EQ(run("synth --scene ssl --n 1 --seed 1", dir_).code, 2);
   EXPECT_EQ(run("synth --help", dir_).code, 0);
+}
+
+TEST_F(SynthCli, CameraRangesFromTheCommandLine) {
+  const fs::path set = dir_ / "high";
+  const CliRun r = run("synth --scene ssl --height 0.5:0.5 --pitch 25:25 --roll 0 --n 2 --seed 3 --quiet -o " +
+                           set.string(), dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* stem : {"ssl_3_0000", "ssl_3_0001"}) {
+    const auto truth = nlohmann::json::parse(slurp(set / "truth" / (std::string(stem) + ".json")));
+    EXPECT_NEAR(truth["camera"]["position"][2].get<double>(), 0.5, 1e-9) << stem;
+    EXPECT_NEAR(truth["camera"]["pitch_deg"].get<double>(), 25, 1e-9) << stem;
+    EXPECT_NEAR(truth["camera"]["roll_deg"].get<double>(), 0, 1e-9) << stem;
+  }
+  const std::string o = " --n 1 --seed 1 -o " + (dir_ / "x").string();
+  const CliRun backwards = run("synth --scene ssl --height 0.9:0.3" + o, dir_);
+  EXPECT_EQ(backwards.code, 2);
+  EXPECT_NE(backwards.err.find("--height: LO must not exceed HI"), std::string::npos) << backwards.err;
+  EXPECT_EQ(run("synth --scene ssl --pitch 10" + o, dir_).code, 2);   // not LO:HI
+  EXPECT_EQ(run("synth --scene ssl --roll 90" + o, dir_).code, 2);    // out of range
+  EXPECT_FALSE(fs::exists(dir_ / "x" / "ssl_1_0000.png"));
 }
 
 TEST_F(SynthCli, DemoIsMadeOnceAndItsPathPrinted) {

@@ -76,6 +76,20 @@ TEST(GtEval, WrongLabelsCountAgainstPrecisionAndDoNotCover) {
   EXPECT_NEAR(s.boundary.visible_px, 400, 1e-3);
 }
 
+TEST(GtEval, OnlyTrueMembersCoverALine) {
+  const GtEdges edges(truth_with(10));
+  // Predicted marking along the upper edge but mostly beyond the line: its truth is none (a false
+  // positive), so the part of it on the line covers nothing.
+  const Segment overhang = seg(250, 195, 450, 195);
+  ASSERT_EQ(edges.truth_label(overhang), Label::None);
+  const GtScore s = edges.score(std::vector<Segment>{overhang});
+  EXPECT_EQ(s.marking.predicted, 1);
+  EXPECT_EQ(s.marking.correct, 0);
+  EXPECT_DOUBLE_EQ(s.marking.recall(), 0.0);
+  // The same place covered by a true member counts.
+  EXPECT_NEAR(edges.score(std::vector<Segment>{seg(250, 195, 300, 195)}).marking.recall(), 0.125, 0.01);
+}
+
 TEST(GtEval, TooThinPartsAreNotVisible) {
   GtMatchParams p;
   p.min_width_px = 3;

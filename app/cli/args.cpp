@@ -82,4 +82,14 @@ double parse_double(std::string_view text, std::string_view what, double min, do
   return value;
 }
 
+std::pair<double, double> parse_interval(std::string_view text, std::string_view what, double min, double max) {
+  const auto colon = text.find(':');
+  if (colon == std::string_view::npos)
+    throw Error(std::string(what) + ": expected LO:HI, got '" + std::string(text) + "'");
+  const double lo = parse_double(text.substr(0, colon), what, min, max);
+  const double hi = parse_double(text.substr(colon + 1), what, min, max);
+  if (lo > hi) throw Error(std::string(what) + ": LO must not exceed HI, got '" + std::string(text) + "'");
+  return {lo, hi};
+}
+
 }  // namespace fieldlines::cli

@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace fieldlines::cli {
@@ -33,5 +34,7 @@ class ParsedArgs {
 
 int parse_int(std::string_view text, std::string_view what, int min, int max);
 double parse_double(std::string_view text, std::string_view what, double min, double max);
+// "LO:HI" with min <= LO <= HI <= max.
+std::pair<double, double> parse_interval(std::string_view text, std::string_view what, double min, double max);
 
 }  // namespace fieldlines::cli

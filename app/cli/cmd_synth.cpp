@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "args.hpp"
@@ -33,6 +34,9 @@ options:
   --seed S             set seed (0..2^31-1, required)
   --first I            index of the first image (default 0), to extend a set
   --no-effects         no vignetting, blur, noise or JPEG (clean renders)
+  --height LO:HI       camera height above the carpet in metres (SSL 0.12:0.30, Kid 0.40:0.90)
+  --pitch LO:HI        camera pitch below the horizon in degrees (SSL 2:22, Kid 10:45)
+  --roll MAX           largest |roll| in degrees (SSL 4, Kid 6)
   -o, --output DIR     output folder (created if needed; required)
   --demo               make the built-in demo project if it is missing (30 SSL frames, all
                        conditions, 10 labelled) in DIR or the user's data folder
@@ -44,6 +48,7 @@ options:
 examples:
   fieldlines synth --scene ssl --n 20 --seed 1 -o synth/ssl_train
   fieldlines synth --scene kid --condition all --line-width 0.06 --n 50 --seed 2 -o synth/kid
+  fieldlines synth --scene ssl --height 0.4:0.6 --pitch 15:30 --n 20 --seed 3 -o synth/high_cam
 )";
 
 std::vector<synth::Condition> parse_conditions(const std::string& text) {
@@ -66,7 +71,9 @@ std::vector<synth::Condition> parse_conditions(const std::string& text) {
 }  // namespace
 
 int cmd_synth(const Args& args) {
-  const ParsedArgs a(args, {"--scene", "--condition", "--line-width", "--n", "--seed", "--first", "-o", "--output"},
+  const ParsedArgs a(args,
+                     {"--scene", "--condition", "--line-width", "--n", "--seed", "--first", "-o", "--output",
+                      "--height", "--pitch", "--roll"},
                      {"--no-effects", "--demo", "--quiet", "--help", "-h"});
   if (a.flag("--help") || a.flag("-h")) {
     std::fputs(kHelp, stdout);
@@ -89,6 +96,13 @@ int cmd_synth(const Args& args) {
   p.field.line_width = a.double_or("--line-width", 0, 0.001, 0.3);
   p.conditions = parse_conditions(a.value_or("--condition", "artificial"));
   p.camera_effects = !a.flag("--no-effects");
+  if (a.has("--height") || a.has("--pitch") || a.has("--roll")) {
+    synth::CameraRanges c = synth::default_camera_ranges(p.field.scene);
+    if (const auto v = a.value("--height")) std::tie(c.height_min, c.height_max) = parse_interval(*v, "--height", 0.02, 5);
+    if (const auto v = a.value("--pitch")) std::tie(c.pitch_min, c.pitch_max) = parse_interval(*v, "--pitch", -30, 89);
+    if (a.has("--roll")) c.roll_max = a.double_or("--roll", c.roll_max, 0, 45);
+    p.camera = c;
+  }
   const int n = a.int_or("--n", 1, 1, 100000);
   const int seed = a.int_or("--seed", 0, 0, 2147483647);
   const int first = a.int_or("--first", 0, 0, 100000000);

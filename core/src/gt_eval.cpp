@@ -118,8 +118,10 @@ Label GtEdges::truth_label(const Segment& s) const {
 GtScore GtEdges::score(std::span<const Segment> detected) const {
   GtScore out;
   out.images = 1;
+  std::vector<Label> truths;  // per detected segment
+  truths.reserve(detected.size());
   for (const Segment& s : detected) {
-    const Label truth = truth_label(s);
+    const Label truth = truths.emplace_back(truth_label(s));
     switch (s.label) {
       case Label::Marking:
         ++out.marking.predicted, out.marking.correct += truth == Label::Marking;
@@ -140,9 +142,11 @@ GtScore GtEdges::score(std::span<const Segment> detected) const {
     cls.visible_px += len;
     if (len <= 0) continue;
     const Unit de = direction(e.ax, e.ay, e.bx, e.by);
+    // Only correctly labelled segments cover a line: predicted as this class and true members.
     std::vector<const Segment*> parallel;
-    for (const Segment& s : detected) {
-      if (s.label != e.label) continue;
+    for (std::size_t k = 0; k < detected.size(); ++k) {
+      const Segment& s = detected[k];
+      if (s.label != e.label || truths[k] != e.label) continue;
       const Unit ds = direction(s.x0, s.y0, s.x1, s.y1);
       if (std::abs(de.x * ds.x + de.y * ds.y) >= cos_max) parallel.push_back(&s);
     }
