@@ -1,6 +1,7 @@
 // `fieldlines train`, `eval` and `sweep` end to end through the built CLI.
 #include <cmath>
 #include <cstdlib>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -135,6 +136,12 @@ TEST_F(Cli, SweepPrintsTheTableAndWritesJson) {
   for (const auto& e : j) {
     EXPECT_TRUE(e["precision"].get<double>() >= 0 && e["precision"].get<double>() <= 1);
     EXPECT_TRUE(e["fraction"] == 0.2 || e["fraction"] == 0.5);
+    // Every seed's figures, whose median is the cell's.
+    auto recalls = e["seed_recall"].get<std::vector<double>>();
+    ASSERT_EQ(recalls.size(), 3u);
+    ASSERT_EQ(e["seed_precision"].size(), 3u);
+    std::sort(recalls.begin(), recalls.end());
+    EXPECT_DOUBLE_EQ(recalls[1], e["recall"].get<double>());
   }
 }
 

@@ -29,7 +29,8 @@ options:
   --fractions LIST     comma-separated training fractions in (0, 1) (default 0.1,0.2,...,0.7)
   --seeds N            seeds per fraction (default 10)
   --split S            row (default, the paper's) or image
-  --json OUT           write [{"file", "fraction", "precision", "recall"}] (medians) to OUT
+  --json OUT           write [{"file", "fraction", "precision", "recall", "seed_precision",
+                       "seed_recall"}] to OUT: medians, and every seed's figures in seed order
   --quiet              no progress on stderr
 )";
 
@@ -99,10 +100,19 @@ examples:
     for (std::size_t i = 0; i < data.size(); ++i) {
       const SweepCell& c = results[i][f];
       std::printf(" | %9.2f %-10.2f", c.median_precision, c.median_recall);
+      // Every seed's figures too: the paper's protocol stops PSO after 10 iterations, so one run
+      // can land far from the median (this is how the published single runs are compared).
+      nlohmann::json per_seed_precision = nlohmann::json::array(), per_seed_recall = nlohmann::json::array();
+      for (const ClassCounts& t : c.test) {
+        per_seed_precision.push_back(t.precision());
+        per_seed_recall.push_back(t.recall());
+      }
       json.push_back({{"file", data[i].path},
                       {"fraction", c.fraction},
                       {"precision", c.median_precision},
-                      {"recall", c.median_recall}});
+                      {"recall", c.median_recall},
+                      {"seed_precision", per_seed_precision},
+                      {"seed_recall", per_seed_recall}});
     }
     std::printf("\n");
   }
