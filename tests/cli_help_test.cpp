@@ -9,7 +9,7 @@ namespace {
 class CliHelp : public TempDirTest {};
 
 TEST_F(CliHelp, EveryCommandHasHelpWithExamples) {
-  for (const char* command : {"detect", "bench", "train", "eval", "sweep", "synth", "autolabel"}) {
+  for (const char* command : {"detect", "bench", "train", "eval", "sweep", "synth", "autolabel", "convert"}) {
     const CliRun r = run_cli({command, "--help"}, dir_);
     EXPECT_EQ(r.exit_code, 0) << command << ": " << r.err;
     EXPECT_NE(r.out.find("usage: fieldlines " + std::string(command)), std::string::npos) << command;

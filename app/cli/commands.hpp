@@ -17,6 +17,7 @@ int cmd_eval(const Args& args);
 int cmd_sweep(const Args& args);
 int cmd_synth(const Args& args);
 int cmd_autolabel(const Args& args);
+int cmd_convert(const Args& args);
 int cmd_eval_gt(const Args& args);  // `eval --gt` (cmd_eval_gt.cpp)
 
 }  // namespace fieldlines::cli

@@ -22,6 +22,7 @@ constexpr Command kCommands[] = {
     {"sweep", cmd_sweep, "precision/recall over training fractions (the paper's Table 3)"},
     {"synth", cmd_synth, "render synthetic fields with exact ground truth"},
     {"autolabel", cmd_autolabel, "label detected segments of a synthetic set from its ground truth"},
+    {"convert", cmd_convert, "convert labels between a project file and the reference CSV"},
 };
 
 void print_usage(std::FILE* to) {
@@ -34,6 +35,7 @@ void print_usage(std::FILE* to) {
 examples:
   fieldlines detect --draw overlays/ frames/
   fieldlines train labels/project.json -o robot.json
+  fieldlines convert labels/project.json -o labels.csv
   fieldlines detect --thresholds robot.json --video /dev/video0
   fieldlines synth --demo
 )");

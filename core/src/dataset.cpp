@@ -195,4 +195,13 @@ Project project_from_reference_rows(std::span<const ReferenceRow> rows) {
   return p;
 }
 
+std::vector<ReferenceRow> reference_rows_from_project(const Project& project) {
+  std::vector<ReferenceRow> rows;
+  rows.reserve(project.labelled_count());
+  for (const ImageEntry& e : project.images)
+    for (const Segment& s : e.segments)
+      if (s.label != Label::Unlabelled) rows.push_back({e.path, s});
+  return rows;
+}
+
 }  // namespace fieldlines

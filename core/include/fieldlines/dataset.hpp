@@ -18,6 +18,7 @@
 #include "fieldlines/classifier.hpp"
 #include "fieldlines/detector.hpp"
 #include "fieldlines/labelled_set.hpp"
+#include "fieldlines/reference_csv.hpp"
 #include "fieldlines/segment.hpp"
 
 namespace fieldlines {
@@ -70,7 +71,20 @@ class Project {
   std::vector<ImageEntry> images;
 };
 
-// Labelled data for a project made from reference CSV rows (image paths as in the CSV).
+// Labelled data for a project made from reference CSV rows (image paths as in the CSV). Rows
+// are grouped by image (images in first-seen order, rows of one image in file order);
+// unlabelled rows are kept as Unlabelled segments. Detector and thresholds are the defaults.
 Project project_from_reference_rows(std::span<const ReferenceRow> rows);
+
+// The inverse, for writing a project's labels as the reference CSV (write_reference_csv): one
+// row per segment that carries a human label, images in project order, segments in their order
+// within the image, image paths exactly as stored in the project (relative to its folder).
+// Unlabelled segments are NOT exported: the reference format has exactly one True label column
+// per row and cannot represent them. Nor are the project's detector parameters, thresholds,
+// detect_ms, or images without labelled segments. For every labelled segment the round trip
+// rows -> project_from_reference_rows -> reference_rows_from_project (and through the CSV file,
+// whose floats are written to read back bit for bit) gives back equal endpoints, gradients,
+// saliency, label and image.
+std::vector<ReferenceRow> reference_rows_from_project(const Project& project);
 
 }  // namespace fieldlines
