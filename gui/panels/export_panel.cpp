@@ -63,25 +63,34 @@ void draw_export_panel(studio::StudioController& controller, UiState& ui) {
   ImGui::SetNextItemWidth(-1);
   ImGui::InputText("##path", &ui.export_path);
   folder_browser(ui.export_path);
-  if (ImGui::Button("Export for the robot")) {
+  // Every action reports in one line under the buttons; a failure shows its reason instead.
+  const auto act = [&](const char* button, auto&& action) {
+    if (!ImGui::Button(button)) return;
     try {
-      controller.export_thresholds(ui.export_path);
-      ui.export_message = "wrote " + ui.export_path;
-      ui.export_preview = read_file(ui.export_path);
+      ui.export_message = action();
     } catch (const std::exception& e) {
       ui.export_message = e.what();
     }
-  }
+  };
+  act("Export for the robot", [&] {
+    controller.export_thresholds(ui.export_path);
+    ui.export_preview = read_file(ui.export_path);
+    return "wrote " + ui.export_path;
+  });
   ImGui::SameLine();
-  if (ImGui::Button("Import")) {
-    try {
-      controller.import_thresholds(ui.export_path);
-      ui.export_message = "imported " + ui.export_path;
-      ui.export_preview = read_file(ui.export_path);
-    } catch (const std::exception& e) {
-      ui.export_message = e.what();
-    }
-  }
+  act("Import", [&] {
+    controller.import_thresholds(ui.export_path);
+    ui.export_preview = read_file(ui.export_path);
+    return "imported " + ui.export_path;
+  });
+  ImGui::SameLine();
+  act("Export labels (CSV)", [&] {
+    const fs::path csv = fs::path(ui.export_path).parent_path() /
+                         (controller.project_file().stem().string() + "-labels.csv");
+    const std::size_t rows = controller.export_labels_csv(csv);
+    return "wrote " + std::to_string(rows) + " labelled segments to " + csv.string() +
+           " (the authors' reference CSV; `fieldlines train` reads it)";
+  });
   ImGui::TextWrapped("%s", ui.export_message.c_str());
   if (!ui.export_preview.empty()) {
     ImGui::BeginChild("preview", {0, 0}, true, ImGuiWindowFlags_HorizontalScrollbar);

@@ -12,6 +12,7 @@
 #include "fieldlines/atomic_file.hpp"
 #include "fieldlines/dataset.hpp"
 #include "fieldlines/error.hpp"
+#include "fieldlines/reference_csv.hpp"
 #include "fixtures.hpp"
 #include "studio_controller.hpp"
 
@@ -290,4 +291,17 @@ TEST(StudioController, ExportToAnUnwritablePathIsAnErrorAndImportOfGarbageChange
     EXPECT_THROW(s.controller.import_thresholds(s.dir.path() / "bad.json"), fieldlines::Error) << text;
     EXPECT_FLOAT_EQ(s.controller.thresholds().marking.thresholds.max_angle_deg, thresholds.marking.thresholds.max_angle_deg);
   }
+}
+
+TEST(StudioController, LabelsExportAsTheReferenceCsv) {
+  Session s(2, 6);
+  const std::size_t some[] = {0, 3};
+  ASSERT_TRUE(s.controller.label(some, Label::Marking));
+  const auto csv = s.dir.path() / "labels.csv";
+  EXPECT_EQ(s.controller.export_labels_csv(csv), 2u);
+  const auto rows = fieldlines::read_reference_csv(csv);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].segment.label, Label::Marking);
+  EXPECT_FLOAT_EQ(rows[1].segment.x0, s.controller.segments()[3].x0);
+  EXPECT_THROW(s.controller.export_labels_csv(s.dir.path() / "no-such-folder" / "l.csv"), fieldlines::Error);
 }

@@ -1,5 +1,7 @@
 #include "studio_controller.hpp"
 
+#include "fieldlines/reference_csv.hpp"
+
 #include <algorithm>
 #include <exception>
 
@@ -234,6 +236,12 @@ void StudioController::set_detector_params(const DetectorParams& params) {
   project_.detector = params;
   settings_dirty_ = true;
   settings_changed_at_ = -1;
+}
+
+std::size_t StudioController::export_labels_csv(const std::filesystem::path& path) const {
+  const std::vector<ReferenceRow> rows = reference_rows_from_project(project_);
+  write_reference_csv(path, rows);
+  return rows.size();
 }
 
 void StudioController::export_thresholds(const std::filesystem::path& path) const {

@@ -104,6 +104,9 @@ class StudioController {
 
   // --- robot thresholds file (fieldlines/thresholds_file.hpp); both throw fieldlines::Error
   void export_thresholds(const std::filesystem::path& path) const;
+  // The labelled segments as the reference annotation CSV (unlabelled ones are not in that
+  // format); returns how many rows were written.
+  std::size_t export_labels_csv(const std::filesystem::path& path) const;
   void import_thresholds(const std::filesystem::path& path);
 
   // --- detection (background)
