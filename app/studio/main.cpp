@@ -118,7 +118,7 @@ class StateWriter {
 // folder to open. Throws fieldlines::Error when the video cannot be read; an existing frames
 // folder is reused as it is.
 std::filesystem::path frames_of_video(GLFWwindow* window, const std::filesystem::path& video, int every) {
-  const auto folder = studio::frames_folder_for(video);
+  const auto folder = studio::frames_folder_for(video, every);
   if (std::filesystem::exists(folder)) return folder;
   studio::VideoFramesJob job;
   job.start(video, folder, {every});

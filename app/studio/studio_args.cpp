@@ -24,7 +24,7 @@ const char* studio_usage() {
          "  PROJECT.json     a studio project (labels are autosaved into it)\n"
          "  IMAGE_FOLDER     images to label; creates IMAGE_FOLDER/fieldlines-project.json\n"
          "  VIDEO            mp4/avi/mkv/mov/webm: every N-th frame (--every, default 10) goes to\n"
-         "                   VIDEO_STEM-frames/ next to it, which then opens as an image folder\n"
+         "                   VIDEO_STEM-everyN/ next to it, which then opens as an image folder\n"
          "  (nothing)        the built-in demo: synthetic field pictures, some labelled, made on first use\n"
          "  --last           reopen the most recent project (also listed in the Images tab)\n"
          "  --window-size    initial window size, default 1280x800\n"

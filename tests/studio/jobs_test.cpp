@@ -244,8 +244,9 @@ TEST(VideoFramesJob, KeepsEveryNthFrameAsPng) {
   EXPECT_TRUE(fs::has_video_extension(video));
   EXPECT_TRUE(fs::has_video_extension("A.MP4"));
   EXPECT_FALSE(fs::has_video_extension("a.png"));
-  const auto folder = fs::frames_folder_for(video);
-  EXPECT_EQ(folder, dir.path() / "match-frames");
+  const auto folder = fs::frames_folder_for(video, 10);
+  EXPECT_EQ(folder, dir.path() / "match-every10");
+  EXPECT_EQ(fs::frames_folder_for(video, 15), dir.path() / "match-every15");
   fs::VideoFramesJob job;
   job.start(video, folder, {10});
   job.wait();

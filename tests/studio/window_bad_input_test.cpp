@@ -89,7 +89,7 @@ TEST_F(StudioBadInput, CorruptVideoIsRefusedWithAMessage) {
   const auto r = run_studio({video.string()}, true);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("match.mp4"), std::string::npos) << r.output;
-  EXPECT_FALSE(fs::exists(dir() / "match-frames")) << "a half-written frames folder was left";
+  EXPECT_FALSE(fs::exists(dir() / "match-every10")) << "a half-written frames folder was left";
 }
 
 TEST_F(StudioBadInput, DamagedAndUnusualPicturesAreReportedAndTheRestWorks) {

@@ -23,8 +23,8 @@ bool has_video_extension(const std::filesystem::path& path) {
   return std::find(kVideo.begin(), kVideo.end(), ext) != kVideo.end();
 }
 
-std::filesystem::path frames_folder_for(const std::filesystem::path& video) {
-  return video.parent_path() / (video.stem().string() + "-frames");
+std::filesystem::path frames_folder_for(const std::filesystem::path& video, int every) {
+  return video.parent_path() / (video.stem().string() + "-every" + std::to_string(every));
 }
 
 VideoFramesJob::~VideoFramesJob() {

@@ -11,8 +11,9 @@ namespace fieldlines::studio {
 // True for the file extensions treated as video (mp4, avi, mkv, mov, webm, m4v), case-insensitive.
 bool has_video_extension(const std::filesystem::path& path);
 
-// <video folder>/<video stem>-frames
-std::filesystem::path frames_folder_for(const std::filesystem::path& video);
+// <video folder>/<video stem>-every<N>: another --every gets its own folder (and labels) rather
+// than silently reusing frames taken at a different rate.
+std::filesystem::path frames_folder_for(const std::filesystem::path& video, int every);
 
 struct VideoFramesParams {
   int every = 10;  // keep frame 0, every, 2*every, ...
