@@ -68,6 +68,44 @@ TEST(Detector, RepeatedCallsGiveIdenticalResults) {
   }
 }
 
+// Regression (found by the detector fuzzer in CI): an anchor whose first branch ended on a
+// segment reused the previous anchor's pixels -- after a larger image, pixels outside this one --
+// to seed its other side. Every result must be what a fresh detector gives.
+TEST(Detector, ResultsNeverDependOnEarlierImages) {
+  cv::RNG rng(20261130);
+  DetectorParams params;  // the original ELSED's denser scan finds far more anchors
+  params.gaussian_kernel = 5;
+  params.scan_interval = 2;
+  params.min_line_length = 15;
+  LineDetector reused(params);
+  for (int k = 0; k < 400; ++k) {
+    const int w = 8 + rng.uniform(0, 200), h = 8 + rng.uniform(0, 150);
+    cv::Mat img(h, w, CV_8UC3);
+    if (k % 3 == 0) {
+      rng.fill(img, cv::RNG::UNIFORM, 0, 256);  // noise: many short, broken edges
+    } else {
+      img.setTo(cv::Scalar(50, 130, 40));
+      for (int l = 0; l < 1 + k % 5; ++l) {
+        const cv::Point a(rng.uniform(0, w), rng.uniform(0, h)), b(rng.uniform(0, w), rng.uniform(0, h));
+        cv::line(img, a, b, cv::Scalar(230, 230, 230), 1 + rng.uniform(0, 6));
+      }
+      cv::Mat noise(img.size(), img.type());
+      rng.fill(noise, cv::RNG::NORMAL, 0, 4);
+      img += noise;
+    }
+    LineDetector fresh(params);
+    const auto expected = fresh.detect(img);
+    const auto got = reused.detect(img);
+    ASSERT_EQ(got.size(), expected.size()) << "image " << k << " (" << w << "x" << h << ")";
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      ASSERT_TRUE(std::isfinite(got[i].x0) && std::isfinite(got[i].y1)) << "image " << k;
+      EXPECT_EQ(got[i].x0, expected[i].x0) << "image " << k << ", segment " << i;
+      EXPECT_EQ(got[i].y1, expected[i].y1) << "image " << k << ", segment " << i;
+      EXPECT_EQ(got[i].saliency, expected[i].saliency) << "image " << k << ", segment " << i;
+    }
+  }
+}
+
 TEST(Detector, AcceptsGreyBgraAnd16BitImages) {
   cv::theRNG().state = 3;
   const cv::Mat bgr = field_image();

@@ -28,6 +28,9 @@ void EdgeDrawer::draw_from_anchor(Pixel anchor) {
   const EdgeDir dir = maps_->dir[anchor.y * maps_->width + anchor.x];
   const Step first = dir == EdgeDir::Horizontal ? Step::Right : Step::Down;
   mark(anchor) = Mark::Anchor;
+  // Only this anchor's own first-branch pixels may seed its other side: never a previous
+  // anchor's (or a previous image's, whose pixels may lie outside this one).
+  anchor_pixels_.clear();
   stack_.push_back({first, anchor, true, {}});
   chain_.push_back(anchor);
   draw_tree(anchor, anchor_pixels_, true);

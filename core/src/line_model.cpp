@@ -1,5 +1,6 @@
 #include "line_model.hpp"
 
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
@@ -116,8 +117,15 @@ void LineModel::update_equation() {
   eq_[2] = static_cast<double>(sy_ * sxx_ - sx_ * sxy_);
   eq_[0] = horizontal_ ? along : across;
   eq_[1] = horizontal_ ? across : along;
-  const double inv = 1.0 / std::sqrt(eq_[0] * eq_[0] + eq_[1] * eq_[1]);
-  for (double& e : eq_) e *= inv;
+  const double norm = std::sqrt(eq_[0] * eq_[0] + eq_[1] * eq_[1]);
+  if (norm > 0 && std::isfinite(norm)) {
+    for (double& e : eq_) e /= norm;
+  } else {
+    // Degenerate sums (every pixel on one major coordinate): the axis line through their mean,
+    // never a NaN equation.
+    const double minor_mean = n > 0 ? static_cast<double>(sy_) / static_cast<double>(n) : 0.0;
+    eq_ = horizontal_ ? std::array<double, 3>{0.0, 1.0, -minor_mean} : std::array<double, 3>{1.0, 0.0, -minor_mean};
+  }
   // Orient the normal so the line direction (-b, a) follows the drawing direction.
   if (dx_ * -eq_[1] + dy_ * eq_[0] < 0)
     for (double& e : eq_) e = -e;

@@ -34,6 +34,7 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
   out.x1 = e[2];
   out.y1 = e[3];
   if (params.validate && seg.count() < 2) return false;
+  if (!std::isfinite(e[0]) || !std::isfinite(e[1]) || !std::isfinite(e[2]) || !std::isfinite(e[3])) return false;
 
   // Normal orientation of the segment in [0, pi), from its endpoints.
   const float sdx = e[2] - e[0], sdy = e[3] - e[1];

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -24,9 +25,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (image.depth() == CV_32F) cv::patchNaNs(image, 0.0);
   static fieldlines::LineDetector detector;  // reused across inputs, as a robot would
   try {
-    for (const fieldlines::Segment& s : detector.detect(image)) {
-      // Every output must be finite and inside (or on) the image's extended bounds.
-      if (!std::isfinite(s.x0) || !std::isfinite(s.saliency) || !std::isfinite(s.grad_x[0])) __builtin_trap();
+    const std::vector<fieldlines::Segment> segments = detector.detect(image);
+    // A detector that has seen other images must give what a fresh one gives: no state may
+    // leak from one call into the next (a stale-buffer bug was found this way).
+    const std::vector<fieldlines::Segment> fresh = fieldlines::LineDetector().detect(image);
+    if (fresh.size() != segments.size()) __builtin_trap();
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const fieldlines::Segment& s = segments[i];
+      // Every output must be finite.
+      if (!std::isfinite(s.x0) || !std::isfinite(s.y0) || !std::isfinite(s.x1) || !std::isfinite(s.y1) ||
+          !std::isfinite(s.saliency) || !std::isfinite(s.grad_x[0]) || !std::isfinite(s.grad_y[0]))
+        __builtin_trap();
+      if (std::memcmp(&s.x0, &fresh[i].x0, sizeof(float)) != 0 || s.saliency != fresh[i].saliency) __builtin_trap();
     }
   } catch (const fieldlines::Error&) {
     // Unsupported types are reported, not crashed on.
