@@ -1,5 +1,6 @@
 #include "args.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -61,6 +62,12 @@ int ParsedArgs::int_or(const std::string& name, int fallback, int min, int max) 
 double ParsedArgs::double_or(const std::string& name, double fallback, double min, double max) const {
   const auto v = value(name);
   return v ? parse_double(*v, name, min, max) : fallback;
+}
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
 }
 
 int parse_int(std::string_view text, std::string_view what, int min, int max) {

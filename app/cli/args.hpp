@@ -2,6 +2,7 @@
 // A small, strict command-line parser: unknown options are errors, values are checked.
 #include <map>
 #include <optional>
+#include <filesystem>
 #include <set>
 #include <string>
 #include <string_view>
@@ -31,6 +32,9 @@ class ParsedArgs {
   std::set<std::string> flags_;
   std::vector<std::string> positionals_;
 };
+
+// A file name's extension in lower case (".csv" for "A.CSV"), empty when it has none.
+std::string lower_extension(const std::filesystem::path& path);
 
 int parse_int(std::string_view text, std::string_view what, int min, int max);
 double parse_double(std::string_view text, std::string_view what, double min, double max);

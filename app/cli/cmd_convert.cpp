@@ -1,5 +1,4 @@
 // `fieldlines convert`: a labelling project to the reference annotation CSV and back.
-#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -10,6 +9,7 @@
 #include "fieldlines/dataset.hpp"
 #include "fieldlines/error.hpp"
 #include "fieldlines/reference_csv.hpp"
+#include "labelled_data.hpp"
 #include "output_file.hpp"
 
 namespace fieldlines::cli {
@@ -50,22 +50,6 @@ examples:
   fieldlines convert D4_humanoid_kid.csv -o d4/project.json
   fieldlines autolabel synth/train && fieldlines convert synth/train/project.json -o train.csv
 )";
-
-std::string lower_extension(const fs::path& p) {
-  std::string ext = p.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-// The input as a project (a CSV becomes one via project_from_reference_rows). The format is
-// told apart exactly as load_labelled_data (labelled_data.cpp) does for train/eval/sweep; the
-// whole project is kept here, unlabelled segments included, which LoadedData does not hold.
-Project load_project_or_csv(const std::string& path) {
-  if (!fs::is_regular_file(path)) throw Error("'" + path + "' is not a file");
-  if (lower_extension(path) == ".csv" || looks_like_reference_csv(path))
-    return project_from_reference_rows(read_reference_csv(path));
-  return Project::load(path);
-}
 
 // "1 image", "2 images".
 std::string count(std::size_t n, const char* noun) {
@@ -109,7 +93,7 @@ int cmd_convert(const Args& args) {
     }
   }
 
-  const Project project = load_project_or_csv(data);
+  const Project project = load_data_as_project(data);
   std::size_t segments = 0;
   for (const ImageEntry& e : project.images) segments += e.segments.size();
   const std::size_t labelled = project.labelled_count();

@@ -1,7 +1,8 @@
 #include "labelled_data.hpp"
 
-#include <cctype>
 #include <filesystem>
+
+#include "args.hpp"
 
 #include "fieldlines/dataset.hpp"
 #include "fieldlines/error.hpp"
@@ -9,13 +10,27 @@
 
 namespace fieldlines::cli {
 
-LoadedData load_labelled_data(const std::string& path) {
+namespace {
+void require_file(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw Error("'" + path + "' is not a file");
+}
+}  // namespace
+
+bool is_reference_csv_data(const std::string& path) {
+  return lower_extension(path) == ".csv" || looks_like_reference_csv(path);
+}
+
+Project load_data_as_project(const std::string& path) {
+  require_file(path);
+  if (is_reference_csv_data(path)) return project_from_reference_rows(read_reference_csv(path));
+  return Project::load(path);
+}
+
+LoadedData load_labelled_data(const std::string& path) {
+  require_file(path);
   LoadedData d;
   d.path = path;
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".csv" || looks_like_reference_csv(path)) {
+  if (is_reference_csv_data(path)) {
     const std::vector<ReferenceRow> rows = read_reference_csv(path);
     d.set = labelled_set_from_rows(rows);
     d.unlabelled = rows.size() - d.set.size();

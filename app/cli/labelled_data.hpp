@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "fieldlines/classifier.hpp"
+#include "fieldlines/dataset.hpp"
 #include "fieldlines/detector.hpp"
 #include "fieldlines/labelled_set.hpp"
 
@@ -20,6 +21,14 @@ struct LoadedData {
 
 // Throws fieldlines::Error naming the file on any problem (malformed rows included).
 LoadedData load_labelled_data(const std::string& path);
+
+// The DATA format rule of every command: a reference CSV when named *.csv (any case) or when it
+// starts with the CSV header, else a project file.
+bool is_reference_csv_data(const std::string& path);
+
+// A whole DATA file as a project, unlabelled segments included (a CSV through
+// project_from_reference_rows). Throws fieldlines::Error naming the file.
+Project load_data_as_project(const std::string& path);
 
 // Several files as one set; image names are prefixed with "<file>:" when there is more than
 // one file, so equal names in different files stay different images.
