@@ -13,6 +13,28 @@ std::vector<std::pair<const char*, ClassCounts Counts::*>> reported_classes(Trai
   return out;
 }
 
+// One class across the folds: each fold's test figures, their mean and deviation, and the
+// counts pooled over the folds (every row is tested exactly once).
+struct ClassOverFolds {
+  std::vector<double> precision, recall, f1;
+  MeanStd p, r;
+  ClassCounts pooled;
+};
+
+ClassOverFolds over_folds(const CrossValidation& cv, ClassCounts Counts::*member) {
+  ClassOverFolds o;
+  for (const FoldResult& f : cv.folds) {
+    const ClassCounts& c = f.test.*member;
+    o.precision.push_back(c.precision());
+    o.recall.push_back(c.recall());
+    o.f1.push_back(c.f1());
+    o.pooled += c;
+  }
+  o.p = mean_std(o.precision);
+  o.r = mean_std(o.recall);
+  return o;
+}
+
 }  // namespace
 
 nlohmann::json class_json(const ClassCounts& c) {
@@ -62,19 +84,10 @@ nlohmann::json cross_validation_json(const CrossValidation& cv) {
     j["test_segments"].push_back(f.test_segments);
   }
   for (const auto& [name, member] : reported_classes(cv.target)) {
-    std::vector<double> precision, recall, f1;
-    ClassCounts pooled;
-    for (const FoldResult& f : cv.folds) {
-      const ClassCounts& c = f.test.*member;
-      precision.push_back(c.precision());
-      recall.push_back(c.recall());
-      f1.push_back(c.f1());
-      pooled += c;
-    }
-    const MeanStd p = mean_std(precision), r = mean_std(recall);
-    j[name] = {{"precision", precision}, {"recall", recall},        {"f1", f1},
-               {"mean_precision", p.mean}, {"mean_recall", r.mean}, {"std_precision", p.std},
-               {"std_recall", r.std},     {"pooled", class_json(pooled)}};
+    const ClassOverFolds o = over_folds(cv, member);
+    j[name] = {{"precision", o.precision},   {"recall", o.recall},        {"f1", o.f1},
+               {"mean_precision", o.p.mean}, {"mean_recall", o.r.mean},   {"std_precision", o.p.std},
+               {"std_recall", o.r.std},      {"pooled", class_json(o.pooled)}};
   }
   return j;
 }
@@ -96,21 +109,14 @@ void print_cross_validation(std::FILE* out, const CrossValidation& cv) {
   const auto summary = [&](const char* label, auto pick) {
     std::fprintf(out, "%-7s %8s %8s", label, "", "");
     for (const auto& c : classes) {
-      std::vector<double> p, r;
-      ClassCounts pooled;
-      for (const FoldResult& f : cv.folds) {
-        p.push_back((f.test.*c.second).precision());
-        r.push_back((f.test.*c.second).recall());
-        pooled += f.test.*c.second;
-      }
-      const auto [pv, rv] = pick(mean_std(p), mean_std(r), pooled);
+      const auto [pv, rv] = pick(over_folds(cv, c.second));
       std::fprintf(out, "  %-8s %5.3f %5.3f", "", pv, rv);
     }
     std::fprintf(out, "\n");
   };
-  summary("mean", [](MeanStd p, MeanStd r, const ClassCounts&) { return std::pair{p.mean, r.mean}; });
-  summary("std", [](MeanStd p, MeanStd r, const ClassCounts&) { return std::pair{p.std, r.std}; });
-  summary("pooled", [](MeanStd, MeanStd, const ClassCounts& c) { return std::pair{c.precision(), c.recall()}; });
+  summary("mean", [](const ClassOverFolds& o) { return std::pair{o.p.mean, o.r.mean}; });
+  summary("std", [](const ClassOverFolds& o) { return std::pair{o.p.std, o.r.std}; });
+  summary("pooled", [](const ClassOverFolds& o) { return std::pair{o.pooled.precision(), o.pooled.recall()}; });
 }
 
 }  // namespace fieldlines::cli
