@@ -74,7 +74,7 @@ Outcome kill_many_times(const std::vector<std::string>& args, const fs::path& fi
   std::mt19937 rng(20261123);
   std::uniform_real_distribution<double> anywhere(0.0, 2.0 * full), near_end(0.8 * full, 1.2 * full);
   std::uniform_int_distribution<int> in_save_us(0, 500);
-  const std::string temp_prefix = fieldlines::test::temporary_prefix(file);
+  const std::string temp_prefix = fieldlines::temporary_prefix(file);
   Outcome o;
   for (int k = 0; k < kKills; ++k) {
     fieldlines::write_file_atomically(file, old);

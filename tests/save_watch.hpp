@@ -1,6 +1,6 @@
 #pragma once
 // Watching atomic saves from a crash-safety test: the hidden temporary files a save writes beside
-// its target (".NAME.tmpNNN", fieldlines/atomic_file.hpp), and waiting for one to appear.
+// its target (fieldlines::temporary_prefix), and waiting for one to appear.
 #include <poll.h>
 #include <sys/inotify.h>
 #include <unistd.h>
@@ -9,20 +9,14 @@
 #include <filesystem>
 #include <string>
 
-namespace fieldlines::test {
+#include "fieldlines/atomic_file.hpp"
 
-// Name prefix of the temporary files a save of `file` writes.
-inline std::string temporary_prefix(const std::filesystem::path& file) {
-  std::string prefix = ".";
-  prefix += file.filename().string();
-  prefix += ".tmp";
-  return prefix;
-}
+namespace fieldlines::test {
 
 // Temporary files left beside `file`: the only debris a killed save may leave, never a damaged
 // `file`.
 inline int temporaries(const std::filesystem::path& file) {
-  const std::string prefix = temporary_prefix(file);
+  const std::string prefix = fieldlines::temporary_prefix(file);
   int n = 0;
   for (const auto& e : std::filesystem::directory_iterator(file.parent_path()))
     if (e.path().filename().string().rfind(prefix, 0) == 0) ++n;

@@ -16,14 +16,6 @@ namespace {
 
 std::string errno_text() { return std::strerror(errno); }
 
-// ".NAME.tmp": hidden, beside the target, so the rename stays within one file system.
-std::string temporary_prefix(const std::filesystem::path& path) {
-  std::string prefix = ".";
-  prefix += path.filename().string();
-  prefix += ".tmp";
-  return prefix;
-}
-
 // Closes the descriptor and removes the temporary file unless the rename succeeded.
 class TempFile {
  public:
@@ -55,6 +47,13 @@ class TempFile {
 };
 
 }  // namespace
+
+std::string temporary_prefix(const std::filesystem::path& path) {
+  std::string prefix = ".";
+  prefix += path.filename().string();
+  prefix += ".tmp";
+  return prefix;
+}
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
   if (path.empty()) throw Error("cannot save: empty file name");

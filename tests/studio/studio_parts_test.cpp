@@ -110,7 +110,7 @@ TEST(OpenProject, FolderGetsAProjectFileAndIsReopened) {
   ASSERT_EQ(opened.project.images.size(), 2u);
   EXPECT_EQ(opened.project.images[0].path, "img_00.png");
   // A save killed mid-write an hour ago left its temporary file: reopening clears it.
-  const auto debris = dir.path() / (std::string(".") + fs::kFolderProjectName + ".tmp4242");
+  const auto debris = dir.path() / (fieldlines::temporary_prefix(fs::kFolderProjectName) + "4242");
   fieldlines::write_file_atomically(debris, "{\"half");
   std::filesystem::last_write_time(debris, std::filesystem::file_time_type::clock::now() - std::chrono::hours(1));
   EXPECT_EQ(fs::open_project(opened.file).project.images.size(), 2u);

@@ -42,7 +42,7 @@ class StudioCrash : public studio_test::StudioUnderX {
 
 TEST_F(StudioCrash, KilledDuringAutosavesLeavesOldOrCompleteProject) {
   const fieldlines::Project original = fieldlines::Project::load(project_);
-  const std::string temp_prefix = fieldlines::test::temporary_prefix(project_);
+  const std::string temp_prefix = fieldlines::temporary_prefix(project_);
   std::mt19937 rng(20261129);
   std::uniform_int_distribution<int> anywhere_ms(0, 1500), in_save_us(0, 100);
   int mid_save = 0, changed = 0;

@@ -12,6 +12,10 @@ namespace fieldlines {
 // when any step fails; the temporary file is removed on failure.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
 
+// Name prefix of the temporary files a save of `path` writes beside it (".NAME.tmp" plus a
+// number): hidden, and in the same folder so the rename stays within one file system.
+std::string temporary_prefix(const std::filesystem::path& path);
+
 // Removes the temporary files that saves of `path` killed mid-write (SIGKILL, power cut) left
 // beside it, when older than `min_age` (a younger one may belong to a save in progress).
 // Best effort, never throws; returns how many were removed.
