@@ -15,8 +15,8 @@
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "fieldlines/image_io.hpp"
-#include "peer_detectors.hpp"
+#include "fieldlines/data/image_io.hpp"
+#include "app/cli/peer_detectors.hpp"
 
 namespace {
 

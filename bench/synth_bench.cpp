@@ -3,8 +3,8 @@
 // The budget is < 50 ms per image; compare the per-image time with BM_Detector below.
 #include <benchmark/benchmark.h>
 
-#include "fieldlines/detector.hpp"
-#include "fieldlines/synth.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/synth/synth.hpp"
 
 namespace {
 
@@ -32,7 +32,7 @@ struct Stage {
   explicit Stage(int scene) {
     const SynthParams p = params_for(scene);
     const FieldModel f = make_field(p.field);
-    Rand r(3);
+    fieldlines::Rand r(3);
     world = make_world(f, p.clutter, r);
     camera = sample_camera(f, p.intrinsics, default_camera_ranges(f.scene), r);
     lighting = sample_lighting(Condition::Artificial, world, r);

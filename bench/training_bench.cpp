@@ -6,10 +6,10 @@
 
 #include <benchmark/benchmark.h>
 
-#include "fieldlines/feature_table.hpp"
-#include "fieldlines/metrics.hpp"
-#include "fieldlines/reference_csv.hpp"
-#include "fieldlines/training.hpp"
+#include "fieldlines/train/feature_table.hpp"
+#include "fieldlines/train/metrics.hpp"
+#include "fieldlines/data/reference_csv.hpp"
+#include "fieldlines/train/training.hpp"
 
 namespace fl = fieldlines;
 

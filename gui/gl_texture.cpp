@@ -1,4 +1,4 @@
-#include "gl_texture.hpp"
+#include "gui/gl_texture.hpp"
 
 #include <cstdint>
 

@@ -1,4 +1,4 @@
-#include "image_view.hpp"
+#include "gui/image_view.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <imgui.h>
 
-#include "hit_test.hpp"
+#include "gui/model/hit_test.hpp"
 
 namespace fieldlines::gui {
 

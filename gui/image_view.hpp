@@ -3,10 +3,10 @@
 // gestures that become controller commands (hover, click to label, drag a rectangle, pan, zoom).
 #include <cstddef>
 
-#include "gl_texture.hpp"
-#include "overlay_style.hpp"
-#include "studio_controller.hpp"
-#include "view_transform.hpp"
+#include "gui/gl_texture.hpp"
+#include "gui/model/overlay_style.hpp"
+#include "gui/model/studio_controller.hpp"
+#include "gui/model/view_transform.hpp"
 
 namespace fieldlines::gui {
 

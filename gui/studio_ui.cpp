@@ -1,11 +1,11 @@
-#include "studio_ui.hpp"
+#include "gui/studio_ui.hpp"
 
 #include <cstdio>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
-#include "panels/panels.hpp"
+#include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
 

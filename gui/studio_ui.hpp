@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "fieldlines/training.hpp"
-#include "frame_stats.hpp"
-#include "image_view.hpp"
-#include "studio_controller.hpp"
+#include "fieldlines/train/training.hpp"
+#include "gui/model/frame_stats.hpp"
+#include "gui/image_view.hpp"
+#include "gui/model/studio_controller.hpp"
 
 namespace fieldlines::gui {
 

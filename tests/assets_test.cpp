@@ -2,7 +2,7 @@
 // built-in defaults (the reference's) and load cleanly.
 #include <gtest/gtest.h>
 
-#include "fieldlines/thresholds_file.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
 #include "shared_data.hpp"
 
 namespace fieldlines {

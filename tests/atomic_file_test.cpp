@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <string>
 
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/error.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/detect/error.hpp"
 
 namespace fl = fieldlines;
 namespace fs = std::filesystem;

@@ -14,9 +14,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli_test_support.hpp"
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/reference_csv.hpp"
-#include "fieldlines/thresholds_file.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/data/reference_csv.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
 
 namespace fieldlines::test {
 

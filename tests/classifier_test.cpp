@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fieldlines/classifier.hpp"
+#include "fieldlines/detect/classifier.hpp"
 #include "shared_data.hpp"
 
 namespace fieldlines {

@@ -13,9 +13,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cli_test_support.hpp"
-#include "fieldlines/detector.hpp"
-#include "fieldlines/reference_csv.hpp"
-#include "fieldlines/thresholds_file.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/data/reference_csv.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
 
 namespace fs = std::filesystem;
 using fieldlines::test::CliRun;

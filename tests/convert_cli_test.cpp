@@ -10,9 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "cli_test_support.hpp"
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/reference_csv.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/reference_csv.hpp"
 
 namespace fs = std::filesystem;
 

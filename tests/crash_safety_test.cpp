@@ -13,9 +13,9 @@
 #include <thread>
 
 #include "bad_input_support.hpp"
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/thresholds_file.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
 #include "save_watch.hpp"
 
 namespace fs = std::filesystem;

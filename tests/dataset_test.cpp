@@ -5,11 +5,11 @@
 
 #include <gtest/gtest.h>
 
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/label_commands.hpp"
-#include "fieldlines/reference_csv.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/label_commands.hpp"
+#include "fieldlines/data/reference_csv.hpp"
 #include "shared_data.hpp"
 
 namespace fl = fieldlines;

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "fieldlines/detector.hpp"
+#include "fieldlines/detect/detector.hpp"
 #include "reference_segments.hpp"
 #include "shared_data.hpp"
 

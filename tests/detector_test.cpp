@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
-#include "fieldlines/detector.hpp"
-#include "fieldlines/error.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/error.hpp"
 
 namespace fieldlines {
 namespace {

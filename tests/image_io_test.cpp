@@ -12,9 +12,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "fieldlines/detector.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/image_io.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/image_io.hpp"
 
 namespace fs = std::filesystem;
 using fieldlines::Error;

@@ -8,7 +8,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "fieldlines/overlay.hpp"
+#include "fieldlines/data/overlay.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-#include "progress.hpp"
+#include "app/cli/progress.hpp"
 
 using fieldlines::cli::Progress;
 using fieldlines::cli::ProgressParams;

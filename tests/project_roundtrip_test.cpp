@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_test_support.hpp"
-#include "fieldlines/dataset.hpp"
+#include "fieldlines/data/project.hpp"
 
 namespace fieldlines::test {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/reference_csv.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/reference_csv.hpp"
 #include "shared_data.hpp"
 
 namespace fl = fieldlines;

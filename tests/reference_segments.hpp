@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "fieldlines/segment.hpp"
+#include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines::test {
 

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-#include "fieldlines/atomic_file.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
 
 namespace fieldlines::test {
 

@@ -9,10 +9,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/demo.hpp"
-#include "fieldlines/synth.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/synth/demo.hpp"
+#include "fieldlines/synth/synth.hpp"
 
 namespace fieldlines {
 namespace {

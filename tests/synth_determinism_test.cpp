@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 
-#include "fieldlines/error.hpp"
-#include "fieldlines/synth.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/synth/synth.hpp"
 
 namespace fieldlines::synth {
 namespace {

@@ -2,11 +2,11 @@
 // thresholds on one seed, and score detection + classification on images of another seed.
 #include <gtest/gtest.h>
 
-#include "fieldlines/detector.hpp"
-#include "fieldlines/gt_eval.hpp"
-#include "fieldlines/labelled_set.hpp"
-#include "fieldlines/synth.hpp"
-#include "fieldlines/training.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/synth/gt_eval.hpp"
+#include "fieldlines/data/labelled_set.hpp"
+#include "fieldlines/synth/synth.hpp"
+#include "fieldlines/train/training.hpp"
 
 namespace fieldlines {
 namespace {

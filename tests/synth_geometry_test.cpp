@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fieldlines/synth.hpp"
+#include "fieldlines/synth/synth.hpp"
 
 namespace fieldlines::synth {
 namespace {

@@ -1,8 +1,8 @@
 // Scoring against ground truth: truth labels of segments, precision and edge-length recall.
 #include <gtest/gtest.h>
 
-#include "fieldlines/error.hpp"
-#include "fieldlines/gt_eval.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/synth/gt_eval.hpp"
 
 namespace fieldlines {
 namespace {

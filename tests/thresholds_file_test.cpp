@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/thresholds_file.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
 
 namespace fl = fieldlines;
 namespace fs = std::filesystem;

@@ -9,10 +9,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/reference_csv.hpp"
-#include "fieldlines/thresholds_file.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/data/reference_csv.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
 #include "shared_data.hpp"
 
 namespace fl = fieldlines;

@@ -10,16 +10,16 @@
 
 #include <gtest/gtest.h>
 
-#include "fieldlines/error.hpp"
-#include "fieldlines/feature_table.hpp"
-#include "fieldlines/labelled_set.hpp"
-#include "fieldlines/metrics.hpp"
-#include "fieldlines/protocols.hpp"
-#include "fieldlines/pso.hpp"
-#include "fieldlines/reference_csv.hpp"
-#include "fieldlines/splits.hpp"
-#include "fieldlines/sweep.hpp"
-#include "fieldlines/training.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/train/feature_table.hpp"
+#include "fieldlines/data/labelled_set.hpp"
+#include "fieldlines/train/metrics.hpp"
+#include "fieldlines/train/protocols.hpp"
+#include "fieldlines/train/pso.hpp"
+#include "fieldlines/data/reference_csv.hpp"
+#include "fieldlines/train/splits.hpp"
+#include "fieldlines/train/sweep.hpp"
+#include "fieldlines/train/training.hpp"
 #include "shared_data.hpp"
 
 namespace fl = fieldlines;

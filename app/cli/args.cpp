@@ -1,11 +1,11 @@
-#include "args.hpp"
+#include "app/cli/args.hpp"
 
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 
-#include "fieldlines/error.hpp"
+#include "fieldlines/detect/error.hpp"
 
 namespace fieldlines::cli {
 

@@ -4,17 +4,17 @@
 #include <filesystem>
 #include <string>
 
-#include "args.hpp"
-#include "commands.hpp"
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/detector.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/gt_eval.hpp"
-#include "fieldlines/image_io.hpp"
-#include "fieldlines/reference_csv.hpp"
-#include "fieldlines/synth.hpp"
-#include "fieldlines/thresholds_file.hpp"
-#include "synth_set.hpp"
+#include "app/cli/args.hpp"
+#include "app/cli/commands.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/synth/gt_eval.hpp"
+#include "fieldlines/data/image_io.hpp"
+#include "fieldlines/data/reference_csv.hpp"
+#include "fieldlines/synth/synth.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
+#include "app/cli/synth_set.hpp"
 
 namespace fieldlines::cli {
 namespace {

@@ -10,14 +10,14 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core/utility.hpp>
 
-#include "args.hpp"
-#include "commands.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/image_io.hpp"
-#include "image_inputs.hpp"
-#include "output_file.hpp"
-#include "peer_detectors.hpp"
-#include "progress.hpp"
+#include "app/cli/args.hpp"
+#include "app/cli/commands.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/image_io.hpp"
+#include "app/cli/image_inputs.hpp"
+#include "app/cli/output_file.hpp"
+#include "app/cli/peer_detectors.hpp"
+#include "app/cli/progress.hpp"
 
 namespace fieldlines::cli {
 namespace {

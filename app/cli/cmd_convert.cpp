@@ -4,13 +4,13 @@
 #include <string>
 #include <vector>
 
-#include "args.hpp"
-#include "commands.hpp"
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/reference_csv.hpp"
-#include "labelled_data.hpp"
-#include "output_file.hpp"
+#include "app/cli/args.hpp"
+#include "app/cli/commands.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/reference_csv.hpp"
+#include "app/cli/labelled_data.hpp"
+#include "app/cli/output_file.hpp"
 
 namespace fieldlines::cli {
 namespace {

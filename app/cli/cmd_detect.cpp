@@ -11,20 +11,20 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "args.hpp"
-#include "commands.hpp"
-#include "detections_json.hpp"
-#include "fieldlines/detector.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/image_io.hpp"
-#include "fieldlines/overlay.hpp"
-#include "fieldlines/reference_csv.hpp"
-#include "fieldlines/thresholds_file.hpp"
-#include "image_inputs.hpp"
-#include "output_file.hpp"
-#include "parallel_batch.hpp"
-#include "progress.hpp"
-#include "video_stream.hpp"
+#include "app/cli/args.hpp"
+#include "app/cli/commands.hpp"
+#include "app/cli/detections_json.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/image_io.hpp"
+#include "fieldlines/data/overlay.hpp"
+#include "fieldlines/data/reference_csv.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
+#include "app/cli/image_inputs.hpp"
+#include "app/cli/output_file.hpp"
+#include "app/cli/parallel_batch.hpp"
+#include "app/cli/progress.hpp"
+#include "app/cli/video_stream.hpp"
 
 namespace fieldlines::cli {
 namespace {

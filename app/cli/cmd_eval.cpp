@@ -1,15 +1,15 @@
 // `fieldlines eval`: precision/recall of a thresholds file on labelled data.
 #include <cstdio>
 
-#include "args.hpp"
-#include "commands.hpp"
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/metrics.hpp"
-#include "fieldlines/thresholds_file.hpp"
-#include "labelled_data.hpp"
-#include "output_file.hpp"
-#include "training_report.hpp"
+#include "app/cli/args.hpp"
+#include "app/cli/commands.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/train/metrics.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
+#include "app/cli/labelled_data.hpp"
+#include "app/cli/output_file.hpp"
+#include "app/cli/training_report.hpp"
 
 namespace fieldlines::cli {
 namespace {

@@ -9,16 +9,16 @@
 
 #include <nlohmann/json.hpp>
 
-#include "args.hpp"
-#include "commands.hpp"
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/detector.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/gt_eval.hpp"
-#include "fieldlines/image_io.hpp"
-#include "fieldlines/synth.hpp"
-#include "fieldlines/thresholds_file.hpp"
-#include "synth_set.hpp"
+#include "app/cli/args.hpp"
+#include "app/cli/commands.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/synth/gt_eval.hpp"
+#include "fieldlines/data/image_io.hpp"
+#include "fieldlines/synth/synth.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
+#include "app/cli/synth_set.hpp"
 
 namespace fieldlines::cli {
 namespace {

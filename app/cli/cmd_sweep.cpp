@@ -6,15 +6,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include "args.hpp"
-#include "commands.hpp"
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/sweep.hpp"
-#include "labelled_data.hpp"
-#include "output_file.hpp"
-#include "progress.hpp"
-#include "training_options.hpp"
+#include "app/cli/args.hpp"
+#include "app/cli/commands.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/train/sweep.hpp"
+#include "app/cli/labelled_data.hpp"
+#include "app/cli/output_file.hpp"
+#include "app/cli/progress.hpp"
+#include "app/cli/training_options.hpp"
 
 namespace fieldlines::cli {
 namespace {

@@ -5,11 +5,11 @@
 #include <tuple>
 #include <vector>
 
-#include "args.hpp"
-#include "commands.hpp"
-#include "fieldlines/demo.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/synth.hpp"
+#include "app/cli/args.hpp"
+#include "app/cli/commands.hpp"
+#include "fieldlines/synth/demo.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/synth/synth.hpp"
 
 namespace fieldlines::cli {
 namespace {

@@ -8,17 +8,17 @@
 #include <string>
 #include <vector>
 
-#include "args.hpp"
-#include "commands.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/splits.hpp"
-#include "fieldlines/thresholds_file.hpp"
-#include "fieldlines/training.hpp"
-#include "labelled_data.hpp"
-#include "output_file.hpp"
-#include "progress.hpp"
-#include "training_options.hpp"
-#include "training_report.hpp"
+#include "app/cli/args.hpp"
+#include "app/cli/commands.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/train/splits.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
+#include "fieldlines/train/training.hpp"
+#include "app/cli/labelled_data.hpp"
+#include "app/cli/output_file.hpp"
+#include "app/cli/progress.hpp"
+#include "app/cli/training_options.hpp"
+#include "app/cli/training_report.hpp"
 
 namespace fieldlines::cli {
 namespace {

@@ -1,4 +1,4 @@
-#include "detections_json.hpp"
+#include "app/cli/detections_json.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "fieldlines/segment.hpp"
-#include "image_inputs.hpp"
+#include "fieldlines/detect/segment.hpp"
+#include "app/cli/image_inputs.hpp"
 
 namespace fieldlines::cli {
 

@@ -2,8 +2,8 @@
 #include <exception>
 #include <string_view>
 
-#include "commands.hpp"
-#include "fieldlines/error.hpp"
+#include "app/cli/commands.hpp"
+#include "fieldlines/detect/error.hpp"
 
 namespace fieldlines::cli {
 namespace {

@@ -1,9 +1,9 @@
-#include "image_inputs.hpp"
+#include "app/cli/image_inputs.hpp"
 
 #include <system_error>
 
-#include "fieldlines/error.hpp"
-#include "fieldlines/image_io.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/image_io.hpp"
 
 namespace fieldlines::cli {
 

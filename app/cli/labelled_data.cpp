@@ -1,12 +1,12 @@
-#include "labelled_data.hpp"
+#include "app/cli/labelled_data.hpp"
 
 #include <filesystem>
 
-#include "args.hpp"
+#include "app/cli/args.hpp"
 
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/reference_csv.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/reference_csv.hpp"
 
 namespace fieldlines::cli {
 

@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "fieldlines/classifier.hpp"
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/detector.hpp"
-#include "fieldlines/labelled_set.hpp"
+#include "fieldlines/detect/classifier.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/data/labelled_set.hpp"
 
 namespace fieldlines::cli {
 

@@ -1,10 +1,10 @@
-#include "output_file.hpp"
+#include "app/cli/output_file.hpp"
 
 #include <string>
 #include <system_error>
 
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/error.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/detect/error.hpp"
 
 namespace fieldlines::cli {
 

@@ -1,4 +1,4 @@
-#include "peer_detectors.hpp"
+#include "app/cli/peer_detectors.hpp"
 
 #include <memory>
 

@@ -8,8 +8,8 @@
 
 #include <opencv2/core/mat.hpp>
 
-#include "fieldlines/classifier.hpp"
-#include "fieldlines/detector.hpp"
+#include "fieldlines/detect/classifier.hpp"
+#include "fieldlines/detect/detector.hpp"
 
 namespace fieldlines::cli {
 

@@ -1,4 +1,4 @@
-#include "progress.hpp"
+#include "app/cli/progress.hpp"
 
 #include <unistd.h>
 

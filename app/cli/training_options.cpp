@@ -1,6 +1,6 @@
-#include "training_options.hpp"
+#include "app/cli/training_options.hpp"
 
-#include "fieldlines/error.hpp"
+#include "fieldlines/detect/error.hpp"
 
 namespace fieldlines::cli {
 namespace {

@@ -3,9 +3,9 @@
 #include <set>
 #include <string>
 
-#include "args.hpp"
-#include "fieldlines/classifier.hpp"
-#include "fieldlines/protocols.hpp"
+#include "app/cli/args.hpp"
+#include "fieldlines/detect/classifier.hpp"
+#include "fieldlines/train/protocols.hpp"
 
 namespace fieldlines::cli {
 

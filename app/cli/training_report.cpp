@@ -1,4 +1,4 @@
-#include "training_report.hpp"
+#include "app/cli/training_report.hpp"
 
 #include <cmath>
 

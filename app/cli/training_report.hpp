@@ -9,9 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "fieldlines/metrics.hpp"
-#include "fieldlines/splits.hpp"
-#include "fieldlines/training.hpp"
+#include "fieldlines/train/metrics.hpp"
+#include "fieldlines/train/splits.hpp"
+#include "fieldlines/train/training.hpp"
 
 namespace fieldlines::cli {
 

@@ -1,4 +1,4 @@
-#include "video_stream.hpp"
+#include "app/cli/video_stream.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,10 +7,10 @@
 
 #include <opencv2/videoio.hpp>
 
-#include "fieldlines/detector.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/overlay.hpp"
-#include "open_video.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/overlay.hpp"
+#include "fieldlines/data/video_io.hpp"
 
 namespace fieldlines::cli {
 namespace {

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "fieldlines/thresholds_file.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
 
 namespace fieldlines::cli {
 

@@ -16,17 +16,17 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
-#include "bench_scene.hpp"
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/demo.hpp"
-#include "fieldlines/error.hpp"
-#include "frame_stats.hpp"
-#include "open_project.hpp"
-#include "recent_projects.hpp"
-#include "video_frames.hpp"
-#include "studio_args.hpp"
-#include "studio_controller.hpp"
-#include "studio_ui.hpp"
+#include "gui/model/bench_scene.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/synth/demo.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "gui/model/frame_stats.hpp"
+#include "gui/model/open_project.hpp"
+#include "gui/model/recent_projects.hpp"
+#include "gui/model/video_frames.hpp"
+#include "gui/model/studio_args.hpp"
+#include "gui/model/studio_controller.hpp"
+#include "gui/studio_ui.hpp"
 
 namespace {
 

@@ -9,8 +9,8 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "fieldlines/atomic_file.hpp"
-#include "panels.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
 

@@ -5,7 +5,7 @@
 
 #include <imgui.h>
 
-#include "panels.hpp"
+#include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
 

@@ -3,8 +3,8 @@
 
 #include <imgui.h>
 
-#include "image_view.hpp"
-#include "panels.hpp"
+#include "gui/image_view.hpp"
+#include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
 

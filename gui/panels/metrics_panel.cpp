@@ -1,7 +1,7 @@
 // Metrics tab: live precision/recall/F1 per class on both splits, detection and frame times.
 #include <imgui.h>
 
-#include "panels.hpp"
+#include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
 

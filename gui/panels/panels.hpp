@@ -1,7 +1,7 @@
 #pragma once
 // One function per tab of the studio's side bar; each draws state and calls the controller.
-#include "studio_controller.hpp"
-#include "studio_ui.hpp"
+#include "gui/model/studio_controller.hpp"
+#include "gui/studio_ui.hpp"
 
 namespace fieldlines::gui {
 

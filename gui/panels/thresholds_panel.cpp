@@ -2,7 +2,7 @@
 // and the detector's main parameters (used by the next background detection).
 #include <imgui.h>
 
-#include "panels.hpp"
+#include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
 

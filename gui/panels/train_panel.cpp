@@ -6,7 +6,7 @@
 
 #include <imgui.h>
 
-#include "panels.hpp"
+#include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
 

@@ -8,8 +8,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "fieldlines/detector.hpp"
-#include "fieldlines/error.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 4) return 0;

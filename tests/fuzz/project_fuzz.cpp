@@ -1,7 +1,7 @@
 // Fuzzes the labelling-project reader; what it accepts must save and load back with the same
 // images and labels.
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/error.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/error.hpp"
 #include "fuzz_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -2,8 +2,8 @@
 // round trip unchanged.
 #include <filesystem>
 
-#include "fieldlines/error.hpp"
-#include "fieldlines/reference_csv.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/reference_csv.hpp"
 #include "fuzz_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

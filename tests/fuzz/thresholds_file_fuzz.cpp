@@ -1,6 +1,6 @@
 // Fuzzes the robot's thresholds-file loader; what it accepts must save and load back equal.
-#include "fieldlines/error.hpp"
-#include "fieldlines/thresholds_file.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
 #include "fuzz_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -6,8 +6,8 @@
 
 #include <opencv2/core/mat.hpp>
 
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/segment.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/segment.hpp"
 
 namespace studio_test {
 

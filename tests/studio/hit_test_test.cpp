@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "hit_test.hpp"
+#include "gui/model/hit_test.hpp"
 
 namespace fs = fieldlines::studio;
 using fieldlines::Segment;

@@ -11,13 +11,13 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/dataset.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/data/project.hpp"
 #include "fixtures.hpp"
-#include "message_queue.hpp"
-#include "studio_controller.hpp"
-#include "training_job.hpp"
-#include "video_frames.hpp"
+#include "gui/model/message_queue.hpp"
+#include "gui/model/studio_controller.hpp"
+#include "gui/model/training_job.hpp"
+#include "gui/model/video_frames.hpp"
 
 namespace fs = fieldlines::studio;
 using fieldlines::Label;

@@ -9,12 +9,12 @@
 #include <algorithm>
 #include <vector>
 
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/error.hpp"
-#include "fieldlines/reference_csv.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/reference_csv.hpp"
 #include "fixtures.hpp"
-#include "studio_controller.hpp"
+#include "gui/model/studio_controller.hpp"
 
 namespace fs = fieldlines::studio;
 using fieldlines::Label;

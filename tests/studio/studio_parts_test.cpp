@@ -3,15 +3,15 @@
 
 #include <chrono>
 
-#include "fieldlines/atomic_file.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
 
-#include "fieldlines/error.hpp"
+#include "fieldlines/detect/error.hpp"
 #include "fixtures.hpp"
-#include "frame_stats.hpp"
-#include "open_project.hpp"
-#include "overlay_style.hpp"
-#include "recent_projects.hpp"
-#include "studio_args.hpp"
+#include "gui/model/frame_stats.hpp"
+#include "gui/model/open_project.hpp"
+#include "gui/model/overlay_style.hpp"
+#include "gui/model/recent_projects.hpp"
+#include "gui/model/studio_args.hpp"
 
 namespace fs = fieldlines::studio;
 using fieldlines::Label;

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "view_transform.hpp"
+#include "gui/model/view_transform.hpp"
 
 namespace fs = fieldlines::studio;
 

@@ -13,9 +13,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/synth.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/synth/synth.hpp"
 #include "x_session.hpp"
 
 namespace fs = std::filesystem;

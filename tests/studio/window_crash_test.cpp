@@ -16,8 +16,8 @@
 #include <string>
 #include <thread>
 
-#include "fieldlines/dataset.hpp"
-#include "save_watch.hpp"
+#include "fieldlines/data/project.hpp"
+#include "tests/save_watch.hpp"
 #include "x_session.hpp"
 
 namespace fs = std::filesystem;

@@ -15,8 +15,8 @@
 #include <thread>
 #include <vector>
 
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/synth.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/synth/synth.hpp"
 #include "x_session.hpp"
 
 namespace fs = std::filesystem;

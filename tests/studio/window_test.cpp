@@ -18,10 +18,10 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "fieldlines/dataset.hpp"
-#include "fieldlines/demo.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/synth/demo.hpp"
 #include "fixtures.hpp"
-#include "overlay_style.hpp"
+#include "gui/model/overlay_style.hpp"
 #include "x_session.hpp"
 
 namespace fs = std::filesystem;

@@ -10,10 +10,10 @@
 #include <fstream>
 #include <thread>
 
-#include "fieldlines/atomic_file.hpp"
-#include "fieldlines/dataset.hpp"
-#include "hit_test.hpp"
-#include "view_transform.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/data/project.hpp"
+#include "gui/model/hit_test.hpp"
+#include "gui/model/view_transform.hpp"
 
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;

@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "fieldlines/segment.hpp"
+#include "fieldlines/detect/segment.hpp"
 #include "fixtures.hpp"
 
 namespace studio_test {

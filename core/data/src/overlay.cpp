@@ -1,0 +1,97 @@
+#include "fieldlines/data/overlay.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include <opencv2/imgproc.hpp>
+
+#include "fieldlines/data/image_io.hpp"
+
+namespace fieldlines {
+namespace {
+
+cv::Point2f start(const Segment& s) { return {s.x0, s.y0}; }
+cv::Point2f end(const Segment& s) { return {s.x1, s.y1}; }
+
+// Sub-pixel endpoints via OpenCV's fixed-point shift, so short segments are not rounded away.
+constexpr int kShift = 4;
+cv::Point fixed(cv::Point2f p) {
+  // Clamped so a wild endpoint cannot overflow the fixed-point int; cv::line clips the rest.
+  auto to_fixed = [](float v) {
+    return static_cast<int>(std::lround(std::clamp(v, -1e6f, 1e6f) * (1 << kShift)));
+  };
+  return {to_fixed(p.x), to_fixed(p.y)};
+}
+
+void draw_legend(cv::Mat& canvas, std::span<const Segment> segments, const OverlayParams& p) {
+  struct Entry {
+    Label label;
+    const char* name;
+  };
+  static constexpr std::array<Entry, 3> kEntries{{{Label::Marking, "marking"},
+                                                  {Label::Boundary, "boundary"},
+                                                  {Label::None, "none"}}};
+  const double scale = std::clamp(std::min(canvas.cols, canvas.rows) / 960.0, 0.35, 1.5);
+  const int font = cv::FONT_HERSHEY_SIMPLEX;
+  const int text_thickness = std::max(1, static_cast<int>(std::lround(scale * 1.5)));
+  int baseline = 0;
+  const cv::Size glyph = cv::getTextSize("boundary 0000", font, scale, text_thickness, &baseline);
+  const int pad = std::max(3, glyph.height / 2);
+  const int swatch = glyph.height * 2;
+  const int row = glyph.height + baseline + pad;
+  const cv::Rect box(pad, pad, swatch + glyph.width + 3 * pad, static_cast<int>(kEntries.size()) * row + pad);
+  if (box.br().x > canvas.cols || box.br().y > canvas.rows) return;  // too small: segments matter more
+
+  // Darken the box so the text reads on any background.
+  cv::Mat roi = canvas(box);
+  roi.convertTo(roi, -1, 0.35, 0);
+  for (std::size_t i = 0; i < kEntries.size(); ++i) {
+    const auto& e = kEntries[i];
+    const auto count = std::count_if(segments.begin(), segments.end(),
+                                     [&](const Segment& s) { return s.label == e.label; });
+    const int y = box.y + pad + static_cast<int>(i) * row + glyph.height;
+    const int mid = y - glyph.height / 2;
+    cv::line(canvas, {box.x + pad, mid}, {box.x + pad + swatch, mid}, label_colour(e.label, p),
+             std::max(2, text_thickness + 1), cv::LINE_AA);
+    cv::putText(canvas, std::string(e.name) + " " + std::to_string(count),
+                {box.x + 2 * pad + swatch, y}, font, scale, {255, 255, 255}, text_thickness, cv::LINE_AA);
+  }
+}
+
+}  // namespace
+
+cv::Scalar label_colour(Label label, const OverlayParams& params) {
+  switch (label) {
+    case Label::Marking: return params.marking_colour;
+    case Label::Boundary: return params.boundary_colour;
+    case Label::None: return params.none_colour;
+    case Label::Unlabelled: break;
+  }
+  return params.unlabelled_colour;
+}
+
+cv::Mat draw_overlay(const cv::Mat& image, std::span<const Segment> segments, const OverlayParams& params) {
+  cv::Mat canvas = to_bgr8(image).clone();
+  const int thickness =
+      params.thickness > 0 ? params.thickness : std::max(1, std::min(canvas.cols, canvas.rows) / 240);
+  // Unlabelled and "none" first, so field features are drawn on top where they overlap.
+  for (const Label pass : {Label::Unlabelled, Label::None, Label::Boundary, Label::Marking}) {
+    for (const Segment& s : segments) {
+      if (s.label != pass) continue;
+      if (!std::isfinite(s.x0) || !std::isfinite(s.y0) || !std::isfinite(s.x1) || !std::isfinite(s.y1))
+        continue;
+      const cv::Scalar colour = label_colour(s.label, params);
+      cv::line(canvas, fixed(start(s)), fixed(end(s)), colour, thickness, cv::LINE_AA, kShift);
+      if (params.endpoints) {
+        cv::circle(canvas, fixed(start(s)), (thickness + 1) << kShift, colour, cv::FILLED, cv::LINE_AA, kShift);
+        cv::circle(canvas, fixed(end(s)), (thickness + 1) << kShift, colour, cv::FILLED, cv::LINE_AA, kShift);
+      }
+    }
+  }
+  if (params.legend) draw_legend(canvas, segments, params);
+  return canvas;
+}
+
+}  // namespace fieldlines

@@ -1,0 +1,99 @@
+#include "colour_gradients.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "angles.hpp"
+
+namespace fieldlines::elsed {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Bilinear interpolation of an int16 map at (x, y), clamped to the image.
+float sample(const std::vector<std::int16_t>& map, int w, int h, float x, float y) {
+  const int x0 = std::clamp(static_cast<int>(x), 0, w - 1), y0 = std::clamp(static_cast<int>(y), 0, h - 1);
+  const int x1 = std::clamp(static_cast<int>(x + 1), 0, w - 1), y1 = std::clamp(static_cast<int>(y + 1), 0, h - 1);
+  const float tx = x - static_cast<int>(x), ty = y - static_cast<int>(y);
+  const float top = map[y0 * w + x0] + (map[y0 * w + x1] - map[y0 * w + x0]) * tx;
+  const float bottom = map[y1 * w + x0] + (map[y1 * w + x1] - map[y1 * w + x0]) * tx;
+  return top + (bottom - top) * ty;
+}
+
+}  // namespace
+
+bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, const std::vector<Mark>& marks,
+                      const GradientMaps& maps, const cv::Mat& bgr, const ValidationParams& params,
+                      Segment& out) {
+  const int w = maps.width, h = maps.height;
+  const auto& e = seg.endpoints();
+  out.x0 = e[0];
+  out.y0 = e[1];
+  out.x1 = e[2];
+  out.y1 = e[3];
+  if (params.validate && seg.count() < 2) return false;
+  if (!std::isfinite(e[0]) || !std::isfinite(e[1]) || !std::isfinite(e[2]) || !std::isfinite(e[3])) return false;
+
+  // Normal orientation of the segment in [0, pi), from its endpoints.
+  const float sdx = e[2] - e[0], sdy = e[3] - e[1];
+  const float along = e[2] > e[0] ? std::atan2(sdy, sdx) : std::atan2(-sdy, -sdx);
+  const double normal = wrap_half_turn(along + kPi / 2);
+  // Line through the endpoints, normalised, to re-project pixels onto it.
+  float la = e[1] - e[3], lb = e[2] - e[0], lc = e[0] * e[3] - e[1] * e[2];
+  const float ln = std::sqrt(la * la + lb * lb);
+  la /= ln, lb /= ln, lc /= ln;
+
+  const int trim = static_cast<int>(std::min(5.0, seg.count() * 0.1));
+  const Pixel first = seg.first(), last = seg.last();
+  std::array<float, 27> window{};  // running sum of 3x3 BGR windows, row-major, channel-interleaved
+  int window_count = 0, inliers = 0, outliers = 0;
+
+  for (int i = seg.first_index(); i <= seg.last_index(); ++i) {
+    const Pixel px = chain[i];
+    if (marks[px.y * w + px.x] != Mark::Inlier) continue;  // junction and dropped pixels do not count
+    const int to_end = seg.horizontal() ? std::min(std::abs(px.x - last.x), std::abs(px.x - first.x))
+                                        : std::min(std::abs(px.y - last.y), std::abs(px.y - first.y));
+    if (to_end < trim) continue;
+
+    // The gradient orientation on the line itself (bilinear), not at the discrete pixel.
+    const float dist = la * px.x + lb * px.y + lc;
+    const float qx = px.x - la * dist, qy = px.y - lb * dist;
+    const float gx = sample(maps.dx, w, h, qx, qy), gy = sample(maps.dy, w, h, qx, qy);
+    double angle = std::atan2(gy, gx);
+    if (angle < 0) angle += kPi;
+    if (angle >= kPi) angle -= kPi;
+    orientation_distance(normal, angle) > params.max_angle_error ? ++outliers : ++inliers;
+
+    if (px.x < 1 || px.x >= w - 1 || px.y < 1 || px.y >= h - 1) continue;
+    for (int r = 0; r < 3; ++r) {
+      const std::uint8_t* row = bgr.ptr<std::uint8_t>(px.y - 1 + r) + 3 * (px.x - 1);
+      float* dst = &window[r * 9];
+      for (int k = 0; k < 9; ++k) dst[k] += row[k];
+    }
+    ++window_count;
+  }
+
+  // Sobel of the mean window / 4, in R,G,B order; y is the image-down derivative.
+  out.grad_x = {0, 0, 0};
+  out.grad_y = {0, 0, 0};
+  if (window_count > 0) {
+    const float inv = 1.f / static_cast<float>(window_count);
+    const auto at = [&](int r, int col, int ch) { return window[r * 9 + col * 3 + ch] * inv; };
+    for (int ch = 0; ch < 3; ++ch) {
+      const float gx = (at(0, 2, ch) - at(0, 0, ch)) + 2 * (at(1, 2, ch) - at(1, 0, ch)) + (at(2, 2, ch) - at(2, 0, ch));
+      const float gy = (at(2, 0, ch) - at(0, 0, ch)) + 2 * (at(2, 1, ch) - at(0, 1, ch)) + (at(2, 2, ch) - at(0, 2, ch));
+      out.grad_x[2 - ch] = gx / 4;
+      out.grad_y[2 - ch] = gy / 4;
+    }
+  }
+  if (!params.validate) {
+    out.saliency = std::hypot(sdx, sdy);
+    return true;
+  }
+  out.saliency = static_cast<float>(inliers);
+  return inliers > outliers;
+}
+
+}  // namespace fieldlines::elsed

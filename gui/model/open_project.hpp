@@ -1,0 +1,25 @@
+#pragma once
+// What `fieldlines-studio PATH` opens: a project file, or a folder of images (whose project file
+// is created inside it as fieldlines-project.json, or reopened when it already exists).
+#include <filesystem>
+
+#include "fieldlines/data/project.hpp"
+
+namespace fieldlines::studio {
+
+inline constexpr const char* kFolderProjectName = "fieldlines-project.json";
+
+struct OpenedProject {
+  Project project;
+  std::filesystem::path file;    // where it is (auto)saved
+  bool needs_detection = false;  // some images have no segments yet
+};
+
+// A new project over the images directly inside `folder` (sorted, paths relative to the
+// project file's folder), nothing detected yet. Throws fieldlines::Error when there is no image.
+Project project_for_folder(const std::filesystem::path& folder, const std::filesystem::path& project_file);
+
+// Throws fieldlines::Error with a user-facing message for anything it cannot open.
+OpenedProject open_project(const std::filesystem::path& path);
+
+}  // namespace fieldlines::studio

@@ -1,0 +1,81 @@
+#include "gui/model/overlay_style.hpp"
+
+#include <array>
+
+namespace fieldlines::studio {
+
+namespace {
+constexpr Rgba kMarking{255, 40, 200, 255};    // magenta
+constexpr Rgba kBoundary{30, 120, 255, 255};   // blue
+constexpr Rgba kNone{255, 210, 0, 255};        // yellow
+constexpr Rgba kUnlabelled{0, 230, 230, 255};   // cyan: still to do, must stand out
+constexpr Rgba kNegative{150, 150, 150, 160};  // translucent grey: agreed "not a feature"
+
+constexpr std::array kLabelLegend{
+    LegendEntry{"marking", {kMarking, Stroke::Solid, 2}},
+    LegendEntry{"boundary", {kBoundary, Stroke::Solid, 2}},
+    LegendEntry{"none", {kNone, Stroke::Solid, 2}},
+    LegendEntry{"unlabelled", {kUnlabelled, Stroke::Solid, 1}},
+};
+constexpr std::array kPredictionLegend{
+    LegendEntry{"predicted marking", {kMarking, Stroke::Solid, 2}},
+    LegendEntry{"predicted boundary", {kBoundary, Stroke::Solid, 2}},
+    LegendEntry{"predicted none", {kNone, Stroke::Solid, 1}},
+};
+constexpr std::array kAgreementLegend{
+    LegendEntry{"true positive (class colour)", {kMarking, Stroke::Solid, 2}},
+    LegendEntry{"false positive (predicted class)", {kMarking, Stroke::Dashed, 2}},
+    LegendEntry{"false negative (labelled class)", {kMarking, Stroke::Dotted, 2}},
+    LegendEntry{"true negative", {kNegative, Stroke::Solid, 1}},
+    LegendEntry{"unlabelled", {kUnlabelled, Stroke::Dotted, 1}},
+};
+}  // namespace
+
+std::string_view to_string(OverlayMode mode) {
+  switch (mode) {
+    case OverlayMode::Labels: return "labels";
+    case OverlayMode::Prediction: return "prediction";
+    case OverlayMode::Agreement: return "agreement";
+  }
+  return "?";
+}
+
+Rgba label_colour(Label label) {
+  switch (label) {
+    case Label::Marking: return kMarking;
+    case Label::Boundary: return kBoundary;
+    case Label::None: return kNone;
+    case Label::Unlabelled: return kUnlabelled;
+  }
+  return kUnlabelled;
+}
+
+SegmentStyle style_for(OverlayMode mode, Label truth, Label predicted) {
+  switch (mode) {
+    case OverlayMode::Labels:
+      return {label_colour(truth), Stroke::Solid, truth == Label::Unlabelled ? 1.5f : 2.0f};
+    case OverlayMode::Prediction:
+      return {label_colour(predicted), Stroke::Solid, predicted == Label::None ? 1.0f : 2.0f};
+    case OverlayMode::Agreement:
+      if (truth == Label::Unlabelled) return {kUnlabelled, Stroke::Dotted, 1};
+      if (truth == predicted) {
+        return truth == Label::None ? SegmentStyle{kNegative, Stroke::Solid, 1} : SegmentStyle{label_colour(truth), Stroke::Solid, 2};
+      }
+      // A wrong feature prediction is a false positive of the predicted class (drawn dashed),
+      // even when it is also a false negative of the labelled one.
+      if (predicted != Label::None) return {label_colour(predicted), Stroke::Dashed, 2};
+      return {label_colour(truth), Stroke::Dotted, 2};
+  }
+  return {};
+}
+
+std::span<const LegendEntry> legend(OverlayMode mode) {
+  switch (mode) {
+    case OverlayMode::Labels: return kLabelLegend;
+    case OverlayMode::Prediction: return kPredictionLegend;
+    case OverlayMode::Agreement: return kAgreementLegend;
+  }
+  return {};
+}
+
+}  // namespace fieldlines::studio

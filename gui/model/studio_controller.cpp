@@ -1,0 +1,384 @@
+#include "gui/model/studio_controller.hpp"
+
+#include "fieldlines/data/reference_csv.hpp"
+
+#include <algorithm>
+#include <exception>
+
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/image_io.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
+
+namespace fieldlines::studio {
+
+StudioController::StudioController(Project project, std::filesystem::path project_file, ControllerOptions options)
+    : project_(std::move(project)), project_file_(std::move(project_file)), options_(options) {
+  if (options_.test_every < 2) options_.test_every = 0;
+  rebuild_all_features();
+  load_current_pixels();
+}
+
+// ---------------------------------------------------------------- navigation
+
+std::filesystem::path StudioController::image_path(std::size_t index) const {
+  return Project::resolve(project_file_, project_.images.at(index).path);
+}
+
+bool StudioController::needs_detection(std::size_t index) const {
+  const ImageEntry& e = project_.images.at(index);
+  return e.segments.empty() && e.detect_ms == 0;
+}
+
+void StudioController::select_image(std::size_t index) {
+  if (index >= image_count() || index == current_) return;
+  current_ = index;
+  hovered_.reset();
+  load_current_pixels();
+}
+
+void StudioController::next_image() {
+  if (image_count() > 0) select_image((current_ + 1) % image_count());
+}
+
+void StudioController::previous_image() {
+  if (image_count() > 0) select_image((current_ + image_count() - 1) % image_count());
+}
+
+bool StudioController::next_image_with_errors() {
+  for (std::size_t step = 1; step <= image_count(); ++step) {
+    const std::size_t i = (current_ + step) % image_count();
+    if (progress(i).errors > 0) {
+      select_image(i);
+      return true;
+    }
+  }
+  return false;
+}
+
+void StudioController::load_current_pixels() {
+  pixels_.release();
+  image_error_.clear();
+  ++image_generation_;
+  if (!options_.load_pixels || image_count() == 0) return;
+  try {
+    pixels_ = to_bgr8(load_image(image_path(current_))).clone();
+  } catch (const std::exception& e) {
+    image_error_ = e.what();
+  }
+}
+
+// ---------------------------------------------------------------- segments
+
+std::span<const Segment> StudioController::segments() const {
+  if (image_count() == 0) return {};
+  return project_.images[current_].segments;
+}
+
+std::span<const Label> StudioController::predictions() const {
+  if (image_count() == 0) return {};
+  return predictions_[current_];
+}
+
+const SegmentFeatures& StudioController::features(std::size_t segment) const {
+  return features_.at(current_).at(segment);
+}
+
+void StudioController::set_hovered(std::optional<std::size_t> segment) {
+  hovered_ = segment && *segment < segments().size() ? segment : std::nullopt;
+}
+
+void StudioController::rebuild_features(std::size_t image) {
+  const auto& segs = project_.images[image].segments;
+  auto& f = features_[image];
+  auto& p = predictions_[image];
+  f.resize(segs.size());
+  p.resize(segs.size());
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    f[i] = compute_features(segs[i], project_.thresholds);
+    p[i] = classify(f[i], project_.thresholds);
+  }
+}
+
+void StudioController::rebuild_all_features() {
+  features_.assign(image_count(), {});
+  predictions_.assign(image_count(), {});
+  for (std::size_t i = 0; i < image_count(); ++i) rebuild_features(i);
+  recount();
+}
+
+// ---------------------------------------------------------------- labelling
+
+void StudioController::after_label_change() {
+  recount();
+  autosave();
+}
+
+bool StudioController::label(std::span<const std::size_t> segments, Label label) {
+  if (image_count() == 0) return false;
+  std::vector<SegmentRef> refs;
+  for (const std::size_t i : segments) {
+    if (i < project_.images[current_].segments.size()) refs.push_back({current_, i});
+  }
+  if (!history_.apply(project_, refs, label, std::string("label ") + std::string(to_string(label)))) return false;
+  after_label_change();
+  return true;
+}
+
+bool StudioController::label_hovered(Label label) {
+  if (!hovered_) return false;
+  const std::size_t one[] = {*hovered_};
+  return this->label(one, label);
+}
+
+bool StudioController::label_rest_as_none() {
+  std::vector<std::size_t> rest;
+  const auto segs = segments();
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    if (segs[i].label == Label::Unlabelled) rest.push_back(i);
+  }
+  return label(rest, Label::None);
+}
+
+bool StudioController::undo() {
+  const LabelCommand* next = history_.next_undo();
+  if (!next || next->edits.empty()) return false;
+  select_image(next->edits.front().ref.image);  // show the user what changes
+  if (!history_.undo(project_)) return false;
+  after_label_change();
+  return true;
+}
+
+bool StudioController::redo() {
+  const LabelCommand* next = history_.next_redo();
+  if (!next || next->edits.empty()) return false;
+  select_image(next->edits.front().ref.image);
+  if (!history_.redo(project_)) return false;
+  after_label_change();
+  return true;
+}
+
+// ---------------------------------------------------------------- thresholds and metrics
+
+void StudioController::set_thresholds(const Thresholds& thresholds) {
+  if (thresholds == project_.thresholds) return;
+  settings_dirty_ = true;
+  settings_changed_at_ = -1;
+  const bool same_features = thresholds.boundary.from == project_.thresholds.boundary.from &&
+                             thresholds.boundary.to == project_.thresholds.boundary.to &&
+                             thresholds.marking.from == project_.thresholds.marking.from &&
+                             thresholds.marking.to == project_.thresholds.marking.to &&
+                             thresholds.boundary.two_sided == project_.thresholds.boundary.two_sided &&
+                             thresholds.marking.two_sided == project_.thresholds.marking.two_sided &&
+                             thresholds.mode == project_.thresholds.mode && thresholds.reference_pi == project_.thresholds.reference_pi;
+  project_.thresholds = thresholds;
+  if (!same_features) {
+    rebuild_all_features();
+    return;
+  }
+  reclassify();
+}
+
+void StudioController::reclassify() {
+  for (std::size_t img = 0; img < image_count(); ++img) {
+    for (std::size_t i = 0; i < features_[img].size(); ++i) predictions_[img][i] = classify(features_[img][i], project_.thresholds);
+  }
+  recount();
+}
+
+bool StudioController::is_test_image(std::size_t index) const {
+  return options_.test_every > 0 && (index + 1) % static_cast<std::size_t>(options_.test_every) == 0;
+}
+
+void StudioController::recount() {
+  train_counts_ = {};
+  test_counts_ = {};
+  for (std::size_t img = 0; img < image_count(); ++img) {
+    Counts& counts = is_test_image(img) ? test_counts_ : train_counts_;
+    const auto& segs = project_.images[img].segments;
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      if (segs[i].label != Label::Unlabelled) tally(counts, segs[i].label, predictions_[img][i]);
+    }
+  }
+}
+
+ImageProgress StudioController::progress(std::size_t image) const {
+  ImageProgress p;
+  const auto& segs = project_.images.at(image).segments;
+  p.total = segs.size();
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    if (segs[i].label == Label::Unlabelled) continue;
+    ++p.labelled;
+    if (segs[i].label != predictions_[image][i]) ++p.errors;
+  }
+  return p;
+}
+
+std::size_t StudioController::labelled_total() const {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < image_count(); ++i) n += progress(i).labelled;
+  return n;
+}
+
+// ---------------------------------------------------------------- saving
+
+void StudioController::save() {
+  project_.save(project_file_);
+  ++save_count_;
+  settings_dirty_ = false;
+}
+
+void StudioController::flush() {
+  if (settings_dirty_) autosave();
+}
+
+void StudioController::set_detector_params(const DetectorParams& params) {
+  if (params == project_.detector) return;
+  project_.detector = params;
+  settings_dirty_ = true;
+  settings_changed_at_ = -1;
+}
+
+std::size_t StudioController::export_labels_csv(const std::filesystem::path& path) const {
+  const std::vector<ReferenceRow> rows = reference_rows_from_project(project_);
+  write_reference_csv(path, rows);
+  return rows.size();
+}
+
+void StudioController::export_thresholds(const std::filesystem::path& path) const {
+  ThresholdsFile file;
+  file.detector = project_.detector;
+  file.thresholds = project_.thresholds;
+  const auto metrics = [](const Counts& c) {
+    const auto one = [](const ClassCounts& k) {
+      return nlohmann::json{{"precision", k.precision()}, {"recall", k.recall()}, {"f1", k.f1()},
+                            {"tp", k.tp}, {"fp", k.fp}, {"fn", k.fn}};
+    };
+    return nlohmann::json{{"marking", one(c.marking)}, {"boundary", one(c.boundary)}};
+  };
+  file.provenance = {{"tool", "fieldlines-studio"},
+                     {"project", project_file_.string()},
+                     {"labelled_segments", labelled_total()},
+                     {"train", metrics(train_counts_)},
+                     {"test", metrics(test_counts_)}};
+  save_thresholds_file(path, file);
+}
+
+void StudioController::import_thresholds(const std::filesystem::path& path) {
+  const ThresholdsFile file = load_thresholds_file(path);
+  set_detector_params(file.detector);
+  set_thresholds(file.thresholds);
+  flush();
+}
+
+void StudioController::autosave() {
+  if (!options_.autosave) return;
+  try {
+    save();
+    save_error_.clear();
+  } catch (const std::exception& e) {
+    save_error_ = e.what();  // shown in the status bar; the edit stays in memory
+  }
+}
+
+// ---------------------------------------------------------------- background jobs
+
+std::string DetectionReport::summary() const {
+  if (detected == 0 && failed.empty()) return {};
+  std::string out = "detected " + std::to_string(detected) + " image" + (detected == 1 ? "" : "s");
+  if (labels_kept + labels_lost > 0) {
+    out += "; " + std::to_string(labels_kept) + " labels kept";
+    if (labels_lost > 0) out += ", " + std::to_string(labels_lost) + " could not be re-attached";
+  }
+  if (!failed.empty()) out += "; " + std::to_string(failed.size()) + " failed: " + failed.front().second;
+  if (failed.size() > 1) out += " (and " + std::to_string(failed.size() - 1) + " more, see the Images tab)";
+  return out;
+}
+
+const std::string& StudioController::detection_error(std::size_t index) const {
+  static const std::string none;
+  return index < detection_errors_.size() ? detection_errors_[index] : none;
+}
+
+void StudioController::detect_all(bool only_undetected) {
+  detection_report_ = {};
+  std::vector<DetectionJob::Item> items;
+  for (std::size_t i = 0; i < image_count(); ++i) {
+    if (!only_undetected || needs_detection(i)) items.push_back({i, image_path(i)});
+  }
+  detection_.start(std::move(items), project_.detector, project_.thresholds);
+}
+
+void StudioController::start_training(const TrainParams& params) {
+  std::vector<Segment> train_set, test_set;
+  for (std::size_t img = 0; img < image_count(); ++img) {
+    for (const Segment& s : project_.images[img].segments) {
+      if (s.label != Label::Unlabelled) (is_test_image(img) ? test_set : train_set).push_back(s);
+    }
+  }
+  training_.start(std::move(train_set), std::move(test_set), project_.thresholds, params);
+}
+
+double StudioController::current_detect_ms() const {
+  return image_count() ? project_.images[current_].detect_ms : 0;
+}
+
+double StudioController::mean_detect_ms() const {
+  double total = 0;
+  std::size_t n = 0;
+  for (const ImageEntry& e : project_.images) {
+    if (e.detect_ms > 0) {
+      total += e.detect_ms;
+      ++n;
+    }
+  }
+  return n ? total / static_cast<double>(n) : 0;
+}
+
+bool StudioController::apply_training_result() {
+  const auto& outcome = training_.outcome();
+  if (!outcome || !outcome->error.empty()) return false;
+  set_thresholds(outcome->result.thresholds);
+  flush();  // a deliberate act, not a drag: on disk at once
+  return true;
+}
+
+void StudioController::poll(double now_s) {
+  training_.poll();
+  if (settings_dirty_) {
+    if (settings_changed_at_ < 0) settings_changed_at_ = now_s;
+    if (now_s - settings_changed_at_ >= settings_save_delay_s) {
+      autosave();
+      if (settings_dirty_) settings_changed_at_ = now_s;  // failed: retry after another delay
+    }
+  }
+  bool changed = false;
+  for (DetectionResult& r : detection_.poll()) {
+    if (r.image >= image_count()) {  // the job could not start (bad detector parameters)
+      if (!r.error.empty()) detection_report_.failed.emplace_back(r.image, r.error);
+      continue;
+    }
+    detection_errors_.resize(image_count());
+    detection_errors_[r.image] = r.error;
+    if (!r.error.empty()) {
+      detection_report_.failed.emplace_back(r.image, r.error);
+      continue;
+    }
+    // Human labels move to the new segments that match the old ones (the rest are Unlabelled).
+    for (Segment& s : r.segments) s.label = Label::Unlabelled;
+    const ReattachStats stats = project_.replace_segments(r.image, std::move(r.segments));
+    ++detection_report_.detected;
+    detection_report_.labels_kept += stats.kept;
+    detection_report_.labels_lost += stats.lost;
+    project_.images[r.image].detect_ms = r.detect_ms;
+    rebuild_features(r.image);
+    changed = true;
+  }
+  if (changed) {
+    history_.clear();  // edits may refer to segments that no longer exist
+    if (hovered_ && *hovered_ >= segments().size()) hovered_.reset();
+    recount();
+    autosave();
+  }
+}
+
+}  // namespace fieldlines::studio

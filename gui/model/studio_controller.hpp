@@ -1,0 +1,170 @@
+#pragma once
+// Everything the studio knows and does, without a window: the project, the current image, the
+// hovered segment, label edits with undo/redo, autosave, thresholds with live re-classification
+// from cached features, live metrics, and the background training and detection jobs.
+// The ImGui code reads this state and calls these methods; it holds no logic of its own.
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <opencv2/core/mat.hpp>
+
+#include "gui/model/detection_job.hpp"
+#include "fieldlines/detect/classifier.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/train/metrics.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/data/label_commands.hpp"
+#include "gui/model/training_job.hpp"
+
+namespace fieldlines::studio {
+
+struct ControllerOptions {
+  bool autosave = true;  // save the project atomically after every label edit
+  bool load_pixels = true;  // read the current image from disk (tests can skip it)
+  int test_every = 5;       // every n-th image (1-based index % n == 0) is in the test split
+};
+
+// What the background detections since the last detect_all() did: how many images, the labels
+// re-attached to the new segments by geometry and those that could not be, and the images that
+// failed (unreadable or corrupt), each with its reason.
+struct DetectionReport {
+  std::size_t detected = 0;
+  std::size_t labels_kept = 0, labels_lost = 0;
+  std::vector<std::pair<std::size_t, std::string>> failed;  // image index, reason
+  std::string summary() const;  // one line for the status bar; empty before any detection
+};
+
+struct ImageProgress {
+  std::size_t labelled = 0, total = 0;
+  long errors = 0;  // labelled segments the current thresholds get wrong
+};
+
+class StudioController {
+ public:
+  // Starts from the project's thresholds and detector parameters; autosaves to `project_file`.
+  StudioController(Project project, std::filesystem::path project_file, ControllerOptions options = {});
+
+  // --- project and navigation
+  const Project& project() const { return project_; }
+  const std::filesystem::path& project_file() const { return project_file_; }
+  std::filesystem::path image_path(std::size_t index) const;
+  // An image whose segments were never detected (no segments and no detection time).
+  bool needs_detection(std::size_t index) const;
+  std::size_t image_count() const { return project_.images.size(); }
+  std::size_t current() const { return current_; }
+  void select_image(std::size_t index);  // out of range is ignored
+  void next_image();
+  void previous_image();
+  // Moves to the next image (wrapping) with a labelled segment the thresholds get wrong.
+  bool next_image_with_errors();
+  const cv::Mat& image() const { return pixels_; }  // 8-bit BGR; empty when it could not be read
+  const std::string& image_error() const { return image_error_; }
+  // Bumped whenever image() changes, so the GUI knows to re-upload its texture.
+  std::size_t image_generation() const { return image_generation_; }
+
+  // --- the current image's segments
+  std::span<const Segment> segments() const;               // .label = human label
+  std::span<const Label> predictions() const;              // by the current thresholds
+  const SegmentFeatures& features(std::size_t segment) const;
+  std::optional<std::size_t> hovered() const { return hovered_; }
+  void set_hovered(std::optional<std::size_t> segment);
+
+  // --- labelling (one call = one undo step; autosaved)
+  // Returns false (and records nothing) when no label actually changes.
+  bool label(std::span<const std::size_t> segments, Label label);
+  bool label_hovered(Label label);
+  bool label_rest_as_none();  // every unlabelled segment of the current image
+  bool undo();
+  bool redo();
+  bool can_undo() const { return history_.can_undo(); }
+  bool can_redo() const { return history_.can_redo(); }
+
+  // --- thresholds and metrics (features are cached: no re-detection)
+  const Thresholds& thresholds() const { return project_.thresholds; }
+  // Re-classifies every image from cached features. Saved in the project after a short pause
+  // (see poll), so dragging a slider does not write the file every frame.
+  void set_thresholds(const Thresholds& thresholds);
+  const Counts& train_counts() const { return train_counts_; }
+  const Counts& test_counts() const { return test_counts_; }
+  bool is_test_image(std::size_t index) const;
+  ImageProgress progress(std::size_t image) const;
+  std::size_t labelled_total() const;
+
+  // --- saving
+  void save();  // throws fieldlines::Error
+  std::size_t save_count() const { return save_count_; }
+  const std::string& save_error() const { return save_error_; }  // last autosave failure
+  bool has_unsaved_settings() const { return settings_dirty_; }
+  // Saves pending threshold/detector changes now (on exit, and in tests).
+  void flush();
+
+  // --- robot thresholds file (fieldlines/thresholds_file.hpp); both throw fieldlines::Error
+  void export_thresholds(const std::filesystem::path& path) const;
+  // The labelled segments as the reference annotation CSV (unlabelled ones are not in that
+  // format); returns how many rows were written.
+  std::size_t export_labels_csv(const std::filesystem::path& path) const;
+  void import_thresholds(const std::filesystem::path& path);
+
+  // --- detection (background)
+  const DetectorParams& detector_params() const { return project_.detector; }
+  void set_detector_params(const DetectorParams& params);
+  void detect_all(bool only_undetected = true);
+  DetectionJob& detection() { return detection_; }
+  const DetectionJob& detection() const { return detection_; }
+  const DetectionReport& detection_report() const { return detection_report_; }
+  // The reason the image's last detection failed, or empty.
+  const std::string& detection_error(std::size_t index) const;
+  // Detector time of the current image (from the project), 0 when not detected here.
+  double current_detect_ms() const;
+  // Mean detector time over the project's detected images.
+  double mean_detect_ms() const;
+
+  // --- training (background)
+  void start_training(const TrainParams& params);
+  void cancel_training() { training_.cancel(); }
+  TrainingJob& training() { return training_; }
+  const TrainingJob& training() const { return training_; }
+  // Adopts the finished training's thresholds; false when there is none.
+  bool apply_training_result();
+
+  // Once per frame on the UI thread, with the time in seconds (glfwGetTime): takes finished
+  // background work and saves settings changed more than `settings_save_delay_s` ago.
+  void poll(double now_s = 0);
+  static constexpr double settings_save_delay_s = 0.5;
+
+ private:
+  void load_current_pixels();
+  void rebuild_features(std::size_t image);
+  void rebuild_all_features();
+  void reclassify();
+  void recount();
+  void after_label_change();
+  void autosave();
+
+  Project project_;
+  std::filesystem::path project_file_;
+  ControllerOptions options_;
+  bool settings_dirty_ = false;
+  double settings_changed_at_ = -1;  // poll time of the first poll after the change
+  std::size_t current_ = 0;
+  cv::Mat pixels_;
+  std::string image_error_;
+  std::size_t image_generation_ = 0;
+  std::optional<std::size_t> hovered_;
+  LabelHistory history_;
+  std::vector<std::vector<SegmentFeatures>> features_;  // per image, per segment
+  std::vector<std::vector<Label>> predictions_;         // per image, per segment
+  Counts train_counts_, test_counts_;
+  std::size_t save_count_ = 0;
+  std::string save_error_;
+  DetectionJob detection_;
+  DetectionReport detection_report_;
+  std::vector<std::string> detection_errors_;  // per image
+  TrainingJob training_;
+};
+
+}  // namespace fieldlines::studio
