@@ -14,6 +14,10 @@ set(CPACK_COMPONENTS_ALL detect libs dev tools)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# Our own libraries are resolved from the build tree; the packages depend on each other through
+# CPACK_COMPONENT_<C>_DEPENDS.
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS ${PROJECT_BINARY_DIR}/core)
+set(CPACK_DEBIAN_ENABLE_COMPONENT_DEPENDS ON)
 set(_fieldlines_soversion ${PROJECT_VERSION_MAJOR})
 set(CPACK_DEBIAN_DETECT_PACKAGE_NAME libfieldlines-detect${_fieldlines_soversion})
 set(CPACK_DEBIAN_DETECT_PACKAGE_SECTION libs)
