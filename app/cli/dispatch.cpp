@@ -17,6 +17,7 @@ struct Command {
 constexpr Command kCommands[] = {
     {"detect", cmd_detect, "detect and classify field lines in images or folders"},
     {"bench", cmd_bench, "time the detector against OpenCV's line detectors"},
+    {"calibrate", cmd_calibrate, "fit thresholds for a new field from unlabelled images (no labels)"},
     {"train", cmd_train, "train classification thresholds with PSO on labelled data"},
     {"eval", cmd_eval, "evaluate thresholds on labelled data or synthetic ground truth"},
     {"sweep", cmd_sweep, "precision/recall over training fractions (the paper's Table 3)"},
@@ -34,6 +35,7 @@ void print_usage(std::FILE* to) {
 
 examples:
   fieldlines detect --draw overlays/ frames/
+  fieldlines calibrate venue-photos/ -o robot.json
   fieldlines train labels/project.json -o robot.json
   fieldlines convert labels/project.json -o labels.csv
   fieldlines detect --thresholds robot.json --video /dev/video0

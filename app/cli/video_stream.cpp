@@ -37,7 +37,7 @@ cv::VideoCapture open_source(const std::string& source) {
     std::error_code ec;
     if (source.find("://") == std::string::npos && !std::filesystem::is_regular_file(source, ec))
       throw Error("--video " + source + ": no such file");
-    app::open_video_file(capture, source);
+    open_video_file(capture, source);
   }
   if (!capture.isOpened()) throw Error("--video " + source + ": cannot open (missing file, not a video, or no such camera)");
   return capture;

@@ -1,16 +1,29 @@
 #pragma once
-// Opening a video file for the CLI and the studio (not core: the robot needs no videoio).
+// Video files for the CLI and the studio (not detect: the robot needs no videoio): which paths
+// are videos, and opening one.
 //
 // FFmpeg reads nearly every file and stream; OpenCV's own MJPEG reader needs no codec library.
 // Letting OpenCV probe every backend (GStreamer, Aravis...) only adds console noise and, on a
 // file that is no video, leaks inside those libraries. Their failed attempts are silenced;
 // the caller's error message says what matters.
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <filesystem>
 #include <string>
 
 #include <opencv2/core/utils/logger.hpp>
 #include <opencv2/videoio.hpp>
 
-namespace fieldlines::app {
+namespace fieldlines {
+
+// True for the file extensions treated as video (mp4, avi, mkv, mov, webm, m4v), case-insensitive.
+inline bool has_video_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  constexpr std::array kVideo{".mp4", ".avi", ".mkv", ".mov", ".webm", ".m4v"};
+  return std::find(kVideo.begin(), kVideo.end(), ext) != kVideo.end();
+}
 
 inline bool open_video_file(cv::VideoCapture& capture, const std::string& path) {
   const auto level = cv::utils::logging::getLogLevel();
@@ -22,4 +35,4 @@ inline bool open_video_file(cv::VideoCapture& capture, const std::string& path) 
   return opened;
 }
 
-}  // namespace fieldlines::app
+}  // namespace fieldlines

@@ -1,0 +1,216 @@
+// `fieldlines calibrate PATH... -o robot.json`: thresholds for a new field without a label.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <opencv2/videoio.hpp>
+
+#include "app/cli/args.hpp"
+#include "app/cli/commands.hpp"
+#include "app/cli/image_inputs.hpp"
+#include "app/cli/labelled_data.hpp"
+#include "app/cli/output_file.hpp"
+#include "app/cli/progress.hpp"
+#include "fieldlines/data/image_io.hpp"
+#include "fieldlines/data/project.hpp"
+#include "fieldlines/data/video_io.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
+#include "fieldlines/train/calibrate.hpp"
+
+namespace fieldlines::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kHelp = R"(usage: fieldlines calibrate PATH... -o THRESHOLDS [options]
+
+Fits both classes' thresholds (field marking, field boundary) from the colour gradients of the
+segments alone: no label is needed, and labels present in the input are never read. Writes an
+ordinary thresholds file for the robot (provenance "method": "label-free"). The same input
+always gives the same file.
+
+PATH is an image, a folder of images, a video (every N-th frame), a project file or a reference
+CSV (its label columns may be missing). Images and videos are detected with the detector
+parameters of --thresholds (default: built-in).
+
+A class the images do not show (no boundary wall, say) is disabled and reported. When the
+markings cannot be fitted (no green field, too few segments, no colour mode apart from grey
+edges), it says why, exits with 2 and writes nothing.
+
+options:
+  -o, --output FILE   thresholds file to write (atomically)
+  --json REPORT       also write the fit's figures (per class: mode, spread, mass, separation)
+  --every N           from a video, take every N-th frame (default 10)
+  --thresholds FILE   detector parameters and colour classes to start from (default: built-in)
+  --quiet             no summary on stdout, no progress on stderr
+  -h, --help          this help
+
+examples:
+  fieldlines calibrate venue-photos/ -o robot.json
+  fieldlines calibrate warmup.mp4 --every 15 -o robot.json --json fit.json
+  fieldlines calibrate labels.csv -o robot.json && fieldlines eval robot.json labels.csv
+)";
+
+struct Inputs {
+  std::vector<Segment> segments;
+  std::size_t images = 0;  // images, frames, or image entries of a project / CSV
+  int failed = 0;          // inputs that could not be read (reported, the rest went on)
+};
+
+void add_detected(Inputs& in, LineDetector& detector, const cv::Mat& image) {
+  std::vector<Segment> found;
+  detector.detect(image, found);
+  in.segments.insert(in.segments.end(), found.begin(), found.end());
+  ++in.images;
+}
+
+void add_video(Inputs& in, LineDetector& detector, const fs::path& path, int every, bool quiet) {
+  cv::VideoCapture capture;
+  if (!open_video_file(capture, path.string())) throw Error(path.string() + ": cannot open as a video");
+  const double count = capture.get(cv::CAP_PROP_FRAME_COUNT);
+  const std::size_t expected = count > 0 ? static_cast<std::size_t>(count) / every + 1 : 0;
+  Progress progress("calibrate " + path.filename().string(), expected, stderr,
+                    {quiet ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
+  cv::Mat frame;
+  for (long index = 0; capture.grab(); ++index) {
+    if (index % every != 0) continue;
+    if (!capture.retrieve(frame) || frame.empty()) break;
+    add_detected(in, detector, frame);
+    progress.advance();
+  }
+}
+
+// A project or reference CSV already holds segments: their features, never their labels.
+void add_data_file(Inputs& in, const std::string& path) {
+  const Project project = load_data_as_project(path);
+  for (const ImageEntry& image : project.images) {
+    for (Segment s : image.segments) {
+      s.label = Label::Unlabelled;
+      in.segments.push_back(s);
+    }
+    ++in.images;
+  }
+}
+
+bool is_data_file(const fs::path& path) {
+  return is_reference_csv_data(path.string()) || lower_extension(path) == ".json";
+}
+
+Inputs gather(const std::vector<std::string>& paths, const ThresholdsFile& config, int every, bool quiet) {
+  Inputs in;
+  LineDetector detector(config.detector, config.thresholds);
+  std::vector<std::string> image_paths;
+  for (const std::string& p : paths) {
+    if (fs::is_directory(p) || !(is_data_file(p) || has_video_extension(p))) image_paths.push_back(p);
+    else if (has_video_extension(p)) add_video(in, detector, p, every, quiet);
+    else add_data_file(in, p);
+  }
+  const ImageInputs images = expand_image_inputs(image_paths);
+  Progress progress("calibrate", images.images.size(), stderr,
+                    {quiet ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
+  for (const FailedImage& f : images.failed) {
+    progress.message("fieldlines calibrate: " + f.error);
+    ++in.failed;
+  }
+  for (const fs::path& image : images.images) {
+    try {
+      add_detected(in, detector, load_image(image));
+    } catch (const Error& e) {
+      progress.message(std::string("fieldlines calibrate: ") + e.what());
+      ++in.failed;
+    }
+    progress.advance();
+  }
+  return in;
+}
+
+nlohmann::json class_json(const ClassCalibration& c) {
+  nlohmann::json j = {{"achromatic_deg", c.achromatic_deg}, {"mean_deg", c.mean_deg},
+                      {"sd_deg", c.sd_deg}, {"achromatic_scale_deg", c.achromatic_scale_deg},
+                      {"class_mass", c.class_mass}, {"separation", c.separation},
+                      {"fit_rows", c.fit_rows}, {"iterations", c.iterations}};
+  j["fitted"] = c.thresholds.has_value();
+  j["refused"] = c.thresholds ? nlohmann::json(nullptr) : nlohmann::json(c.refused);
+  return j;
+}
+
+void show_class(const char* name, const ClassCalibration& c, const ClassThresholds& t) {
+  if (!c.thresholds) {
+    std::printf("%-9s disabled: %s\n", name, c.refused.c_str());
+    return;
+  }
+  std::printf("%-9s min projection %8.3f  max angle %7.3f deg  min length %8.3f"
+              "   (mode %.2f +- %.2f deg, %.0f segments)\n",
+              name, t.min_projection, t.max_angle_deg, t.min_length, c.mean_deg, c.sd_deg, c.class_mass);
+}
+
+}  // namespace
+
+int cmd_calibrate(const Args& args) {
+  const ParsedArgs a(args, {"-o", "--output", "--json", "--every", "--thresholds"}, {"--quiet", "-h", "--help"});
+  if (a.flag("-h") || a.flag("--help")) {
+    std::fputs(kHelp, stdout);
+    return 0;
+  }
+  if (a.positionals().empty()) throw Error("expected at least one PATH (see --help)");
+  const auto out_opt = a.has("-o") ? a.value("-o") : a.value("--output");
+  if (!out_opt) throw Error("-o THRESHOLDS is required: the thresholds file to write");
+  const fs::path output = *out_opt;
+  const std::optional<std::string> report = a.value("--json");
+  const int every = a.int_or("--every", 10, 1, 1'000'000);
+  const bool quiet = a.flag("--quiet");
+  // Before any long work: a bad output path fails now, and never over an input.
+  check_output_path("-o", output);
+  check_not_an_input("-o", output, a.positionals());
+  if (report) {
+    check_output_path("--json", *report);
+    check_not_an_input("--json", *report, a.positionals());
+  }
+  ThresholdsFile config;
+  if (const auto t = a.value("--thresholds")) config = load_thresholds_file(*t);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const Inputs in = gather(a.positionals(), config, every, quiet);
+  const auto t1 = std::chrono::steady_clock::now();
+  const Calibration fit = calibrate(in.segments, config.thresholds);
+  const double fit_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
+  const double gather_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
+  // Throws (exit 2, nothing written) when the markings were refused.
+  const Thresholds thresholds = calibrated_thresholds(fit, config.thresholds);
+
+  ThresholdsFile file;
+  file.detector = config.detector;
+  file.thresholds = thresholds;
+  nlohmann::json& p = file.provenance;
+  p["method"] = "label-free";
+  p["inputs"] = a.positionals();
+  p["counts"] = {{"segments", in.segments.size()}, {"images", in.images}, {"failed_inputs", in.failed}};
+  p["contrast_floor"] = fit.contrast_floor;
+  p["fit"] = {{"marking", class_json(fit.marking)}, {"boundary", class_json(fit.boundary)}};
+  // No date: the same input gives the same bytes.
+  p["fieldlines_version"] = FIELDLINES_VERSION;
+  save_thresholds_file(output, file);
+  if (report) {
+    nlohmann::json r = p;
+    r["thresholds_file"] = output.string();
+    r["thresholds"] = to_json(file)["classes"];
+    r["detect_ms"] = gather_ms;
+    r["fit_ms"] = fit_ms;
+    write_output_file(*report, r.dump(2) + "\n");
+  }
+
+  if (!quiet) {
+    std::printf("%zu segments from %zu images; contrast floor %.2f\n", in.segments.size(), in.images,
+                fit.contrast_floor);
+    show_class("boundary", fit.boundary, thresholds.boundary.thresholds);
+    show_class("marking", fit.marking, thresholds.marking.thresholds);
+    std::printf("fit in %.1f ms; wrote %s\n", fit_ms, output.c_str());
+  }
+  return in.failed ? 1 : 0;
+}
+
+}  // namespace fieldlines::cli

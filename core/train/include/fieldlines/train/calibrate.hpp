@@ -1,0 +1,72 @@
+#pragma once
+// Label-free calibration: both classes' thresholds from the segments' colour gradients alone.
+//
+// Why it works without labels: an achromatic edge (wall, robot, furniture, shadow) has a
+// gradient along (1,1,1), so its angle to a class's transition v = to - from is fixed by
+// geometry: theta_A = acos(v.(1,1,1) / (|v| sqrt 3)), 35.26 deg for green-to-white and 54.74 deg
+// for black-to-green. The class's own edges form a mode at smaller angles. Per class, a 1-D
+// mixture over the angle is fitted by EM:
+//   class      Gaussian (mean, sd), seeded from the rows below theta_A - seed_margin_deg;
+//   achromatic Cauchy centred at theta_A (fixed: it is physics) with a fitted scale;
+//   background uniform over [0, theta_A + window_deg].
+// max_angle_deg is where the class's posterior falls to 1/2, right of its mean.
+// min_projection is the projection the weakest edge the detector accepts can have inside that
+// cone (contrast floor * cos(max_angle) / sqrt 2, the floor being a low percentile of the
+// gradient norm normal to the segments), so noise along a segment cannot pass. min_length is
+// 0: the detector's own saliency floor; a length learned on one league's lines does not
+// transfer to another's (Humanoid markings are a third as long as SSL's).
+//
+// Labels are never read. The result depends only on the segments, in any order.
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "fieldlines/detect/classifier.hpp"
+#include "fieldlines/detect/segment.hpp"
+
+namespace fieldlines {
+
+struct CalibrationParams {
+  std::size_t min_segments = 100;   // fewer: the statistics say nothing
+  double window_deg = 10;           // fit angles in [0, theta_A + window]: the spike and its tails
+  double seed_margin_deg = 3;       // the class's seed: angles below theta_A - margin
+  double floor_percentile = 1;      // of the normal gradient norm: the detector's contrast floor
+  double min_class_mass = 30;       // segments the class must hold (EM mass)
+  double min_separation = 1;        // (max_angle - mean) / sd: the cut may not enter the core
+  int max_iterations = 200;
+  double tolerance = 1e-6;          // |delta log-likelihood| per point
+};
+
+// One class's fit, or the reason it was refused.
+struct ClassCalibration {
+  std::optional<ClassThresholds> thresholds;  // empty: refused (see `refused`)
+  std::string refused;                        // why the data do not support a fit
+  double achromatic_deg = 0;                  // theta_A, from the class's colours
+  double mean_deg = 0, sd_deg = 0;            // the class's angle mode
+  double achromatic_scale_deg = 0;            // the Cauchy's fitted scale
+  double class_mass = 0;                      // segments the EM gives the class
+  double separation = 0;                      // (max_angle - mean) / sd
+  std::size_t fit_rows = 0;                   // segments in the fit window
+  int iterations = 0;
+};
+
+struct Calibration {
+  ClassCalibration marking, boundary;
+  double contrast_floor = 0;  // the percentile of the normal gradient norm
+  std::size_t segments = 0;
+};
+
+// Fits both classes of `start` (its colours, sidedness and gradient mode are kept).
+Calibration calibrate(std::span<const Segment> segments, const Thresholds& start = {},
+                      const CalibrationParams& params = {});
+
+// Thresholds that never pass: what a class the data do not show gets, so that a field without a
+// boundary wall does not mark furniture as one.
+ClassThresholds disabled_class();
+
+// `start` with each fitted class replaced, refused ones disabled. Throws fieldlines::Error
+// naming the reason when the marking class was refused: without it there is nothing to write.
+Thresholds calibrated_thresholds(const Calibration& calibration, const Thresholds& start = {});
+
+}  // namespace fieldlines

@@ -1,0 +1,228 @@
+#include "fieldlines/train/calibrate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "fieldlines/detect/error.hpp"
+
+namespace fieldlines {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = 180.0 / kPi;
+
+double norm3(const Rgb& g) { return std::sqrt(double(g[0]) * g[0] + double(g[1]) * g[1] + double(g[2]) * g[2]); }
+
+// The angle an achromatic (1,1,1) gradient makes with the class's transition.
+double achromatic_angle_deg(const ColourClass& c) {
+  const double v[3] = {double(c.to[0]) - c.from[0], double(c.to[1]) - c.from[1], double(c.to[2]) - c.from[2]};
+  const double nv = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  double cosine = (v[0] + v[1] + v[2]) / (nv * std::sqrt(3.0));
+  if (c.two_sided) cosine = std::abs(cosine);
+  return std::acos(std::clamp(cosine, -1.0, 1.0)) * kDeg;
+}
+
+// Linear interpolation between order statistics (numpy's default percentile).
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const double pos = p / 100.0 * double(v.size() - 1);
+  const std::size_t lo = static_cast<std::size_t>(pos);
+  const std::size_t hi = std::min(lo + 1, v.size() - 1);
+  return v[lo] + (pos - double(lo)) * (v[hi] - v[lo]);
+}
+
+// The gradient across the segment: along its normal, so the part along the line (noise) is gone.
+double normal_gradient_norm(const Segment& s) {
+  const double dx = double(s.x1) - s.x0, dy = double(s.y1) - s.y0;
+  const double len = std::hypot(dx, dy);
+  if (!(len > 0)) return 0;
+  const double tx = dx / len, ty = dy / len;
+  double sum = 0;
+  for (int c = 0; c < 3; ++c) {
+    const double g = -ty * s.grad_x[c] + tx * s.grad_y[c];
+    sum += g * g;
+  }
+  return std::sqrt(sum);
+}
+
+double gaussian(double x, double mean, double sd) {
+  const double z = (x - mean) / sd;
+  return std::exp(-0.5 * z * z) / (sd * std::sqrt(2 * kPi));
+}
+double cauchy(double x, double centre, double scale) {
+  const double d = x - centre;
+  return scale / (kPi * (scale * scale + d * d));
+}
+
+struct Mixture {
+  double mean = 0, sd = 1, scale = 1;    // class Gaussian; achromatic Cauchy's scale
+  double w_class = 0, w_achromatic = 0, w_uniform = 0;
+  double uniform = 0;                    // 1 / window width
+  double class_mass = 0;
+  int iterations = 0;
+};
+
+// EM over the angles `x` (all in [0, theta_a + window]). Empty when a component collapses.
+std::optional<Mixture> fit_mixture(const std::vector<double>& x, double theta_a, double x_max,
+                                   const CalibrationParams& params) {
+  std::vector<double> seed;
+  for (const double a : x)
+    if (a < theta_a - params.seed_margin_deg) seed.push_back(a);
+  if (seed.size() < 2) return std::nullopt;
+  const double n = double(x.size());
+  Mixture m;
+  m.mean = percentile(seed, 50);
+  std::vector<double> deviation;
+  for (const double a : seed) deviation.push_back(std::abs(a - m.mean));
+  m.sd = std::max(1.4826 * percentile(deviation, 50), 1.0);  // MAD as a normal sd
+  m.scale = 1;
+  m.w_class = 0.9 * double(seed.size()) / n;
+  m.w_achromatic = 0.9 - m.w_class;
+  m.w_uniform = 0.1;
+  m.uniform = 1.0 / x_max;
+  std::vector<double> r_class(x.size()), r_achromatic(x.size());
+  double previous = -INFINITY;
+  for (int it = 0; it < params.max_iterations; ++it) {
+    m.iterations = it + 1;
+    double log_likelihood = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double c = m.w_class * gaussian(x[i], m.mean, m.sd);
+      const double a = m.w_achromatic * cauchy(x[i], theta_a, m.scale);
+      const double total = c + a + m.w_uniform * m.uniform;
+      log_likelihood += std::log(total);
+      r_class[i] = c / total;
+      r_achromatic[i] = a / total;
+    }
+    double n_class = 0, n_achromatic = 0, sum = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      n_class += r_class[i];
+      n_achromatic += r_achromatic[i];
+      sum += r_class[i] * x[i];
+    }
+    if (n_class < 1 || n_achromatic < 1) return std::nullopt;
+    m.w_class = n_class / n;
+    m.w_achromatic = n_achromatic / n;
+    m.w_uniform = std::max(0.0, 1.0 - m.w_class - m.w_achromatic);
+    m.mean = sum / n_class;
+    double var = 0, scale2 = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      var += r_class[i] * (x[i] - m.mean) * (x[i] - m.mean);
+      // Student-t (nu = 1) EM: each point's latent precision weight.
+      const double z = (x[i] - theta_a) / m.scale;
+      scale2 += r_achromatic[i] * 2.0 / (1.0 + z * z) * (x[i] - theta_a) * (x[i] - theta_a);
+    }
+    m.sd = std::max(std::sqrt(var / n_class), 0.25);
+    m.scale = std::max(std::sqrt(scale2 / n_achromatic), 0.1);
+    m.class_mass = n_class;
+    if (std::abs(log_likelihood - previous) < params.tolerance * n) break;
+    previous = log_likelihood;
+  }
+  return m;
+}
+
+// The first angle right of the class mean (0.01 deg grid) where the class no longer dominates.
+std::optional<double> posterior_crossing(const Mixture& m, double theta_a) {
+  for (double x = m.mean; x < theta_a; x += 0.01) {
+    const double c = m.w_class * gaussian(x, m.mean, m.sd);
+    const double other = m.w_achromatic * cauchy(x, theta_a, m.scale) + m.w_uniform * m.uniform;
+    if (c <= other) return x;
+  }
+  return std::nullopt;
+}
+
+struct Measured {
+  double angle, projection;
+};
+
+ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass& cls, double contrast_floor,
+                           const CalibrationParams& params) {
+  ClassCalibration out;
+  out.achromatic_deg = achromatic_angle_deg(cls);
+  const double theta_a = out.achromatic_deg;
+  const double x_max = theta_a + params.window_deg;
+  // The floor at the achromatic angle keeps the weakest real edges in the fit.
+  const double fit_floor = contrast_floor * std::cos(theta_a / kDeg) / std::sqrt(2.0);
+  std::vector<double> x;
+  for (const Measured& r : rows)
+    if (r.projection >= fit_floor && r.angle <= x_max) x.push_back(r.angle);
+  out.fit_rows = x.size();
+  const std::optional<Mixture> m = fit_mixture(x, theta_a, x_max, params);
+  if (!m) {
+    out.refused = "no colour mode apart from grey edges (is there a green field in the images?)";
+    return out;
+  }
+  out.mean_deg = m->mean;
+  out.sd_deg = m->sd;
+  out.achromatic_scale_deg = m->scale;
+  out.class_mass = m->class_mass;
+  out.iterations = m->iterations;
+  const std::optional<double> cut = posterior_crossing(*m, theta_a);
+  if (!cut) {
+    out.refused = "the class's edges cannot be told from grey edges";
+    return out;
+  }
+  out.separation = (*cut - m->mean) / m->sd;
+  if (m->class_mass < params.min_class_mass) {
+    out.refused = "too few of its edges (" + std::to_string(static_cast<long>(std::lround(m->class_mass))) +
+                  ", at least " + std::to_string(static_cast<long>(params.min_class_mass)) + " needed)";
+    return out;
+  }
+  if (out.separation < params.min_separation) {
+    out.refused = "its edges are not separable from grey edges";
+    return out;
+  }
+  ClassThresholds t;
+  t.max_angle_deg = static_cast<float>(*cut);
+  t.min_projection = static_cast<float>(contrast_floor * std::cos(*cut / kDeg) / std::sqrt(2.0));
+  t.min_length = 0;
+  out.thresholds = t;
+  return out;
+}
+
+}  // namespace
+
+Calibration calibrate(std::span<const Segment> segments, const Thresholds& start, const CalibrationParams& params) {
+  Calibration out;
+  out.segments = segments.size();
+  if (segments.size() < params.min_segments) {
+    const std::string why = "too few segments (" + std::to_string(segments.size()) + ", at least " +
+                            std::to_string(params.min_segments) + " needed)";
+    out.marking.refused = out.boundary.refused = why;
+    out.marking.achromatic_deg = achromatic_angle_deg(start.marking);
+    out.boundary.achromatic_deg = achromatic_angle_deg(start.boundary);
+    return out;
+  }
+  std::vector<double> normal_norms;
+  std::vector<Measured> marking, boundary;
+  normal_norms.reserve(segments.size());
+  marking.reserve(segments.size());
+  boundary.reserve(segments.size());
+  for (const Segment& s : segments) {
+    normal_norms.push_back(normal_gradient_norm(s));
+    const SegmentFeatures f = compute_features(s, start);
+    boundary.push_back({f.boundary.angle_deg, f.boundary.projection});
+    // For a straight edge grad_x and grad_y are one colour vector scaled by the normal's
+    // components: the dominant one measures the same angle with less noise.
+    const int m = f.marking_count == 2 && norm3(s.grad_x) > norm3(s.grad_y) ? 1 : 0;
+    marking.push_back({f.marking[m].angle_deg, f.marking[m].projection});
+  }
+  out.contrast_floor = percentile(normal_norms, params.floor_percentile);
+  out.marking = fit_class(marking, start.marking, out.contrast_floor, params);
+  out.boundary = fit_class(boundary, start.boundary, out.contrast_floor, params);
+  return out;
+}
+
+ClassThresholds disabled_class() { return {1000.f, 0.f, 100000.f}; }
+
+Thresholds calibrated_thresholds(const Calibration& c, const Thresholds& start) {
+  if (!c.marking.thresholds) throw Error("cannot calibrate the field markings: " + c.marking.refused);
+  Thresholds t = start;
+  t.marking.thresholds = *c.marking.thresholds;
+  t.boundary.thresholds = c.boundary.thresholds ? *c.boundary.thresholds : disabled_class();
+  return t;
+}
+
+}  // namespace fieldlines
