@@ -48,7 +48,7 @@ void VideoFramesJob::start(const std::filesystem::path& video, const std::filesy
     try {
       if (params.every < 1) throw Error("video: every-n-th frame must be >= 1");
       cv::VideoCapture capture;
-      if (!app::open_video_file(capture, video.string())) throw Error(video.string() + ": cannot open as a video");
+      if (!open_video_file(capture, video.string())) throw Error(video.string() + ": cannot open as a video");
       std::error_code ec;
       std::filesystem::create_directories(folder, ec);
       if (ec) throw Error(folder.string() + ": cannot create the frames folder (" + ec.message() + ")");
