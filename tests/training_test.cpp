@@ -232,6 +232,29 @@ TEST(Training, RunsOnAWorkerThreadAndCancels) {
   EXPECT_GE(r.iterations_run, 3);
 }
 
+// polish_starts particle bests are polished on top of the PSO best and the box corners, for one
+// class as for both (the corners once filled the start list and crowded them out).
+TEST(Training, PolishesTheRequestedNumberOfParticleBests) {
+  const auto segs = synthetic(600, 3);
+  for (const fl::TrainClass target : {fl::TrainClass::Marking, fl::TrainClass::Boundary, fl::TrainClass::Both}) {
+    for (const int starts : {0, 3, 8, 20}) {
+      fl::TrainParams p = small_params(target, 2);
+      p.pso.iterations = 20;
+      p.polish_starts = starts;
+      const fl::TrainResult r = fl::train(segs, {}, p);
+      EXPECT_EQ(r.polished_particle_bests, starts) << fl::to_string(target) << " " << starts;
+      // More starts only add candidates: the best of them can never score lower.
+      if (starts > 0) {
+        p.polish_starts = 0;
+        EXPECT_GE(r.score, fl::train(segs, {}, p).score) << fl::to_string(target) << " " << starts;
+      }
+    }
+  }
+  fl::TrainParams p = small_params(fl::TrainClass::Marking, 2);
+  p.polish = false;
+  EXPECT_EQ(fl::train(segs, {}, p).polished_particle_bests, 0);
+}
+
 TEST(Training, RejectsBadInput) {
   fl::TrainParams p;
   EXPECT_THROW(fl::train({}, {}, p), fl::Error);

@@ -386,28 +386,28 @@ TrainResult train(std::span<const Segment> labelled, const Thresholds& start, co
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return pso.personal_best_scores[a] > pso.personal_best_scores[b];
     });
-    std::vector<Thresholds> starts{r.thresholds};
-    // Corners of the box (all of them for one class, the two extreme ones for both): optima
-    // often sit on a bound, where coordinate ascent from the interior can stall.
+    std::vector<Thresholds> starts;
+    const auto add_start = [&](const Thresholds& t) {
+      if (std::find(starts.begin(), starts.end(), t) != starts.end()) return false;
+      starts.push_back(t);
+      return true;
+    };
+    add_start(r.thresholds);
+    // Corners of the box (all of them for one class; for both, the most permissive and the most
+    // restrictive): optima often sit on a bound (everything passes on one axis), where
+    // coordinate ascent from the interior can stall.
     const std::size_t corners = dims.size() <= 3 ? std::size_t{1} << dims.size() : 2;
     for (std::size_t c = 0; c < corners; ++c) {
       std::vector<double> x(dims.size());
       for (std::size_t k = 0; k < dims.size(); ++k)
         x[k] = corners == 2 ? ((dims[k].which == Which::Angle) == (c == 0) ? 1.0 : 0.0) : double((c >> k) & 1);
-      starts.push_back(to_thresholds(inner_start, dims, x.data()));
+      add_start(to_thresholds(inner_start, dims, x.data()));
     }
-    // The box's most permissive and most restrictive corners: optima often sit on a bound
-    // (everything-passes on one axis), where coordinate ascent from the interior can stall.
-    for (const double corner : {0.0, 1.0}) {
-      std::vector<double> x(dims.size());
-      for (std::size_t k = 0; k < dims.size(); ++k)
-        x[k] = (dims[k].which == Which::Angle) == (corner == 0.0) ? 1.0 : 0.0;
-      starts.push_back(to_thresholds(inner_start, dims, x.data()));
-    }
+    // Counted apart from the corners, so their number never eats into the particle bests.
     for (const std::size_t p : order) {
-      if (static_cast<int>(starts.size()) >= std::max(3, params.polish_starts + 2)) break;
-      const Thresholds t = to_thresholds(inner_start, dims, pso.personal_best_positions.data() + p * dims.size());
-      if (std::find(starts.begin(), starts.end(), t) == starts.end()) starts.push_back(t);
+      if (r.polished_particle_bests >= params.polish_starts) break;
+      if (add_start(to_thresholds(inner_start, dims, pso.personal_best_positions.data() + p * dims.size())))
+        ++r.polished_particle_bests;
     }
     double best = -INFINITY;
     for (Thresholds t : starts) {

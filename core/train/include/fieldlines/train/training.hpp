@@ -56,7 +56,8 @@ struct TrainParams {
   PsoParams pso;
   ThresholdBounds marking_bounds, boundary_bounds;
   bool polish = true;     // exact breakpoint polish after PSO
-  int polish_starts = 8;  // polish from this many of the best distinct particle bests
+  int polish_starts = 8;  // also polish this many of the best distinct particle bests (besides
+                          // the PSO best and the box corners)
   int threads = 1;        // workers scoring the swarm (1 = the calling thread only)
 };
 
@@ -78,6 +79,9 @@ struct TrainResult {
   Counts counts;          // on the training data
   int iterations_run = 0;
   bool cancelled = false;
+  // Distinct particle bests polished besides the PSO best and the box corners: polish_starts
+  // unless the swarm has fewer distinct ones (0 without polish or when cancelled).
+  int polished_particle_bests = 0;
 };
 
 // `labelled[i].label` is the human label; Unlabelled segments are ignored. `start` gives the
