@@ -123,19 +123,24 @@ std::optional<Mixture> fit_mixture(const std::vector<double>& x, double theta_a,
   return m;
 }
 
+double class_posterior(const Mixture& m, double theta_a, double x) {
+  const double c = m.w_class * gaussian(x, m.mean, m.sd);
+  return c / (c + m.w_achromatic * cauchy(x, theta_a, m.scale) + m.w_uniform * m.uniform);
+}
+
 // The first angle right of the class mean (0.01 deg grid) where the class no longer dominates.
 std::optional<double> posterior_crossing(const Mixture& m, double theta_a) {
-  for (double x = m.mean; x < theta_a; x += 0.01) {
-    const double c = m.w_class * gaussian(x, m.mean, m.sd);
-    const double other = m.w_achromatic * cauchy(x, theta_a, m.scale) + m.w_uniform * m.uniform;
-    if (c <= other) return x;
+  for (int step = 0;; ++step) {
+    const double x = m.mean + 0.01 * step;
+    if (x >= theta_a) return std::nullopt;
+    if (class_posterior(m, theta_a, x) <= 0.5) return x;
   }
-  return std::nullopt;
 }
 
 struct Measured {
-  double angle, projection;
+  double angle, projection, length;
 };
+
 
 ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass& cls, double contrast_floor,
                            const CalibrationParams& params) {
@@ -145,9 +150,12 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   const double x_max = theta_a + params.window_deg;
   // The floor at the achromatic angle keeps the weakest real edges in the fit.
   const double fit_floor = contrast_floor * std::cos(theta_a / kDeg) / std::sqrt(2.0);
-  std::vector<double> x;
+  std::vector<double> x, length;
   for (const Measured& r : rows)
-    if (r.projection >= fit_floor && r.angle <= x_max) x.push_back(r.angle);
+    if (r.projection >= fit_floor && r.angle <= x_max) {
+      x.push_back(r.angle);
+      length.push_back(r.length);
+    }
   out.fit_rows = x.size();
   const std::optional<Mixture> m = fit_mixture(x, theta_a, x_max, params);
   if (!m) {
@@ -174,10 +182,14 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
     out.refused = "its edges are not separable from grey edges";
     return out;
   }
+  // The class's own shortest few: below them, clutter of the class's colour is all that is left.
+  std::vector<double> member_length;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (class_posterior(*m, theta_a, x[i]) >= 0.5) member_length.push_back(length[i]);
   ClassThresholds t;
   t.max_angle_deg = static_cast<float>(*cut);
   t.min_projection = static_cast<float>(contrast_floor * std::cos(*cut / kDeg) / std::sqrt(2.0));
-  t.min_length = 0;
+  t.min_length = static_cast<float>(percentile(member_length, params.length_percentile));
   out.thresholds = t;
   return out;
 }
@@ -203,11 +215,11 @@ Calibration calibrate(std::span<const Segment> segments, const Thresholds& start
   for (const Segment& s : segments) {
     normal_norms.push_back(normal_gradient_norm(s));
     const SegmentFeatures f = compute_features(s, start);
-    boundary.push_back({f.boundary.angle_deg, f.boundary.projection});
+    boundary.push_back({f.boundary.angle_deg, f.boundary.projection, f.length});
     // For a straight edge grad_x and grad_y are one colour vector scaled by the normal's
     // components: the dominant one measures the same angle with less noise.
     const int m = f.marking_count == 2 && norm3(s.grad_x) > norm3(s.grad_y) ? 1 : 0;
-    marking.push_back({f.marking[m].angle_deg, f.marking[m].projection});
+    marking.push_back({f.marking[m].angle_deg, f.marking[m].projection, f.length});
   }
   out.contrast_floor = percentile(normal_norms, params.floor_percentile);
   out.marking = fit_class(marking, start.marking, out.contrast_floor, params);

@@ -12,9 +12,10 @@
 // max_angle_deg is where the class's posterior falls to 1/2, right of its mean.
 // min_projection is the projection the weakest edge the detector accepts can have inside that
 // cone (contrast floor * cos(max_angle) / sqrt 2, the floor being a low percentile of the
-// gradient norm normal to the segments), so noise along a segment cannot pass. min_length is
-// 0: the detector's own saliency floor; a length learned on one league's lines does not
-// transfer to another's (Humanoid markings are a third as long as SSL's).
+// gradient norm normal to the segments), so noise along a segment cannot pass. min_length is a
+// low percentile of the saliency of the class's own members (posterior >= 1/2): relative to
+// the class, because Humanoid markings are a third as long as SSL's, and low, because what
+// has the class's colour but is not the class (a warm-lit wall corner, a shirt) is short.
 //
 // Labels are never read. The result depends only on the segments, in any order.
 #include <cstddef>
@@ -32,6 +33,7 @@ struct CalibrationParams {
   double window_deg = 10;           // fit angles in [0, theta_A + window]: the spike and its tails
   double seed_margin_deg = 3;       // the class's seed: angles below theta_A - margin
   double floor_percentile = 1;      // of the normal gradient norm: the detector's contrast floor
+  double length_percentile = 2;     // of the class members' saliency: min_length
   double min_class_mass = 30;       // segments the class must hold (EM mass)
   double min_separation = 1;        // (max_angle - mean) / sd: the cut may not enter the core
   int max_iterations = 200;
