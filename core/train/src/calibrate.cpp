@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "fieldlines/detect/error.hpp"
@@ -150,12 +153,17 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   const double x_max = theta_a + params.window_deg;
   // The floor at the achromatic angle keeps the weakest real edges in the fit.
   const double fit_floor = contrast_floor * std::cos(theta_a / kDeg) / std::sqrt(2.0);
-  std::vector<double> x, length;
+  // Sorted, so that the sums of the EM (and so every bit of the result) do not depend on the
+  // order the segments came in.
+  std::vector<std::pair<double, double>> kept;  // (angle, length)
   for (const Measured& r : rows)
-    if (r.projection >= fit_floor && r.angle <= x_max) {
-      x.push_back(r.angle);
-      length.push_back(r.length);
-    }
+    if (r.projection >= fit_floor && r.angle <= x_max) kept.emplace_back(r.angle, r.length);
+  std::sort(kept.begin(), kept.end());
+  std::vector<double> x, length;
+  for (const auto& [angle, len] : kept) {
+    x.push_back(angle);
+    length.push_back(len);
+  }
   out.fit_rows = x.size();
   const std::optional<Mixture> m = fit_mixture(x, theta_a, x_max, params);
   if (!m) {

@@ -17,7 +17,7 @@
 // the class, because Humanoid markings are a third as long as SSL's, and low, because what
 // has the class's colour but is not the class (a warm-lit wall corner, a shirt) is short.
 //
-// Labels are never read. The result depends only on the segments, in any order.
+// Labels are never read. The result depends only on the set of segments, not on their order.
 #include <cstddef>
 #include <optional>
 #include <span>

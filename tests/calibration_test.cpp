@@ -1,0 +1,191 @@
+// Label-free calibration (fieldlines/train/calibrate.hpp): recovers known classes from
+// synthetic features, never reads labels, refuses what the data do not support, and on the
+// authors' five files meets the bars against the human labels.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "fieldlines/data/labelled_set.hpp"
+#include "fieldlines/data/reference_csv.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/train/calibrate.hpp"
+#include "fieldlines/train/metrics.hpp"
+#include "shared_data.hpp"
+
+namespace fl = fieldlines;
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+
+// A horizontal segment whose grad_y is `g` (so the normal gradient is g; grad_x is zero).
+fl::Segment segment_with(const fl::Rgb& g, float saliency, fl::Label label) {
+  fl::Segment s;
+  s.x0 = 10, s.y0 = 100, s.x1 = 210, s.y1 = 101;
+  s.grad_y = g;
+  s.saliency = saliency;
+  s.label = label;
+  return s;
+}
+
+// Gradient of magnitude m at `angle` from the marking transition (white -> green, (-1,0,-1)/sqrt2)
+// towards grey (-1,-1,-1), which lies at 35.26 degrees.
+fl::Rgb marking_gradient(double m, double angle_deg) {
+  const double c = std::cos(angle_deg * kDeg), s = std::sin(angle_deg * kDeg);
+  return {float(m * -c / std::sqrt(2.0)), float(m * -s), float(m * -c / std::sqrt(2.0))};
+}
+// Gradient at `angle` from the boundary transition (black -> green, (0,1,0)) towards (1,0,1).
+fl::Rgb boundary_gradient(double m, double angle_deg) {
+  const double c = std::cos(angle_deg * kDeg), s = std::sin(angle_deg * kDeg);
+  return {float(m * s / std::sqrt(2.0)), float(m * c), float(m * s / std::sqrt(2.0))};
+}
+
+struct KnownField {
+  std::vector<fl::Segment> segments;
+  double marking_mean = 26, marking_sd = 2;
+  double boundary_mean = 42, boundary_sd = 3;
+  double grey_sd = 0.6;  // grey edges: the achromatic direction, slightly tinted
+  int markings = 600, boundaries = 250, greys = 900;
+};
+
+// Classes with known angle distributions; grey edges at the achromatic angle of each class.
+KnownField known_field(unsigned seed) {
+  KnownField k;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> magnitude(40, 160), length(60, 600), short_length(20, 300);
+  std::normal_distribution<double> noise(0, 1);
+  for (int i = 0; i < k.markings; ++i)
+    k.segments.push_back(segment_with(marking_gradient(magnitude(rng), k.marking_mean + k.marking_sd * noise(rng)),
+                                      float(length(rng)), fl::Label::Marking));
+  for (int i = 0; i < k.boundaries; ++i)
+    k.segments.push_back(segment_with(boundary_gradient(magnitude(rng), k.boundary_mean + k.boundary_sd * noise(rng)),
+                                      float(length(rng)), fl::Label::Boundary));
+  for (int i = 0; i < k.greys; ++i) {
+    // Grey edges of either sign: (1,1,1) or (-1,-1,-1), tinted by a small random rotation.
+    const double m = magnitude(rng) * (i % 2 ? 1 : -1) / std::sqrt(3.0);
+    k.segments.push_back(segment_with({float(m * (1 + 0.01 * k.grey_sd * noise(rng))),
+                                       float(m * (1 + 0.01 * k.grey_sd * noise(rng))),
+                                       float(m * (1 + 0.01 * k.grey_sd * noise(rng)))},
+                                      float(short_length(rng)), fl::Label::None));
+  }
+  return k;
+}
+
+fl::Counts score(const std::vector<fl::Segment>& segments, const fl::Thresholds& t) {
+  fl::LabelledSet set;
+  for (const fl::Segment& s : segments) set.add("known", s);
+  return fl::evaluate(set, t).total;
+}
+
+TEST(Calibration, RecoversTheSeparatingThresholdsOfKnownClasses) {
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    const KnownField k = known_field(seed);
+    const fl::Calibration c = fl::calibrate(k.segments);
+    ASSERT_TRUE(c.marking.thresholds) << c.marking.refused;
+    ASSERT_TRUE(c.boundary.thresholds) << c.boundary.refused;
+    EXPECT_NEAR(c.marking.achromatic_deg, 35.264, 0.001);
+    EXPECT_NEAR(c.boundary.achromatic_deg, 54.736, 0.001);
+    EXPECT_NEAR(c.marking.mean_deg, k.marking_mean, 0.4);
+    EXPECT_NEAR(c.marking.sd_deg, k.marking_sd, 0.4);
+    EXPECT_NEAR(c.boundary.mean_deg, k.boundary_mean, 0.6);
+    EXPECT_NEAR(c.marking.class_mass, k.markings, 0.05 * k.markings);
+    // The classes end 3+ sd from their mean, the grey spikes start within a degree or two of
+    // the achromatic angle: the cut must fall in between.
+    EXPECT_GT(c.marking.thresholds->max_angle_deg, k.marking_mean + 2.5 * k.marking_sd);
+    EXPECT_LT(c.marking.thresholds->max_angle_deg, 34.0);
+    EXPECT_GT(c.boundary.thresholds->max_angle_deg, k.boundary_mean + 2.5 * k.boundary_sd);
+    EXPECT_LT(c.boundary.thresholds->max_angle_deg, 53.0);
+    const fl::Counts counts = score(k.segments, fl::calibrated_thresholds(c));
+    EXPECT_GE(counts.marking.precision(), 0.99) << "seed " << seed;
+    EXPECT_GE(counts.marking.recall(), 0.95) << "seed " << seed;
+    EXPECT_GE(counts.boundary.precision(), 0.99) << "seed " << seed;
+    EXPECT_GE(counts.boundary.recall(), 0.95) << "seed " << seed;
+  }
+}
+
+TEST(Calibration, NeverReadsLabelsAndIgnoresOrder) {
+  const KnownField k = known_field(7);
+  const fl::Thresholds reference = fl::calibrated_thresholds(fl::calibrate(k.segments));
+  std::vector<fl::Segment> shuffled = k.segments;
+  std::mt19937 rng(11);
+  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  const fl::Thresholds reordered = fl::calibrated_thresholds(fl::calibrate(shuffled));
+  EXPECT_EQ(reordered, reference);
+  // Labels permuted among the segments, then removed: bit-identical thresholds.
+  std::vector<fl::Label> labels;
+  for (const fl::Segment& s : shuffled) labels.push_back(s.label);
+  std::shuffle(labels.begin(), labels.end(), rng);
+  for (std::size_t i = 0; i < shuffled.size(); ++i) shuffled[i].label = labels[i];
+  EXPECT_EQ(fl::calibrated_thresholds(fl::calibrate(shuffled)), reference);
+  for (fl::Segment& s : shuffled) s.label = fl::Label::Unlabelled;
+  EXPECT_EQ(fl::calibrated_thresholds(fl::calibrate(shuffled)), reference);
+}
+
+TEST(Calibration, RefusesWhatTheDataDoNotSupport) {
+  // Too few segments.
+  KnownField k = known_field(3);
+  const std::vector<fl::Segment> few(k.segments.begin(), k.segments.begin() + 5);
+  const fl::Calibration c_few = fl::calibrate(few);
+  EXPECT_FALSE(c_few.marking.thresholds);
+  EXPECT_NE(c_few.marking.refused.find("too few segments"), std::string::npos) << c_few.marking.refused;
+  EXPECT_THROW(fl::calibrated_thresholds(c_few), fl::Error);
+  // Grey edges only (no green field): nothing to fit for either class.
+  const std::vector<fl::Segment> grey(k.segments.begin() + k.markings + k.boundaries, k.segments.end());
+  const fl::Calibration c_grey = fl::calibrate(grey);
+  EXPECT_FALSE(c_grey.marking.thresholds);
+  EXPECT_FALSE(c_grey.boundary.thresholds);
+  try {
+    fl::calibrated_thresholds(c_grey);
+    ADD_FAILURE() << "grey edges alone must not calibrate";
+  } catch (const fl::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("field markings"), std::string::npos) << e.what();
+  }
+  // Markings but no boundary wall: markings fitted, the boundary class disabled.
+  std::vector<fl::Segment> no_wall(k.segments.begin(), k.segments.begin() + k.markings);
+  no_wall.insert(no_wall.end(), grey.begin(), grey.end());
+  const fl::Calibration c_nowall = fl::calibrate(no_wall);
+  ASSERT_TRUE(c_nowall.marking.thresholds);
+  EXPECT_FALSE(c_nowall.boundary.thresholds);
+  const fl::Thresholds t = fl::calibrated_thresholds(c_nowall);
+  EXPECT_EQ(t.boundary.thresholds, fl::disabled_class());
+  EXPECT_EQ(score(no_wall, t).boundary.fp, 0);
+}
+
+// The bars, on all rows of each of the authors' files with the labels stripped before
+// calibrating and used only for scoring.
+TEST(CalibrationShared, MeetsTheBarsOnTheAuthorsFilesWithoutTheirLabels) {
+  FIELDLINES_REQUIRE_SHARED("data/elsed-ssl/annotations", dir);
+  struct Bar {
+    const char* file;
+    bool has_boundary;
+  };
+  for (const Bar& bar : {Bar{"D1_ssl_natural_light", true}, Bar{"D2_ssl_mixed_light", true},
+                         Bar{"D3_ssl_artificial_light", true}, Bar{"D4_humanoid_kid", false},
+                         Bar{"ssl_navigation", true}}) {
+    const std::vector<fl::ReferenceRow> rows = fl::read_reference_csv(dir / (std::string(bar.file) + ".csv"));
+    std::vector<fl::Segment> unlabelled;
+    for (const fl::ReferenceRow& r : rows) {
+      unlabelled.push_back(r.segment);
+      unlabelled.back().label = fl::Label::Unlabelled;
+    }
+    const fl::Calibration c = fl::calibrate(unlabelled);
+    const fl::Evaluation e = fl::evaluate(fl::labelled_set_from_rows(rows), fl::calibrated_thresholds(c));
+    SCOPED_TRACE(bar.file);
+    EXPECT_GE(e.total.marking.precision(), 0.95);
+    EXPECT_GE(e.total.marking.recall(), 0.90);
+    EXPECT_EQ(c.boundary.thresholds.has_value(), bar.has_boundary) << c.boundary.refused;
+    if (bar.has_boundary) {
+      // Reported in the README per file; asserted here with room below the measured figures.
+      EXPECT_GE(e.total.boundary.precision(), 0.90);
+      EXPECT_GE(e.total.boundary.recall(), 0.75);
+    } else {
+      EXPECT_EQ(e.total.boundary.fp, 0);
+    }
+  }
+}
+
+}  // namespace
