@@ -5,29 +5,9 @@
 #include <string>
 
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/train/random.hpp"
 
 namespace fieldlines {
-namespace {
-
-// splitmix64 -> uniform double in [0,1): fixed algorithm, so results do not depend on the
-// standard library's distributions.
-class Rng {
- public:
-  explicit Rng(std::uint64_t seed) : state_(seed) {}
-  double uniform() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return static_cast<double>(z >> 11) * 0x1.0p-53;
-  }
-
- private:
-  std::uint64_t state_;
-};
-
-}  // namespace
-
 void validate(const PsoParams& p) {
   const auto bad = [](const std::string& what) { throw Error("PSO parameter " + what); };
   if (p.particles < 1 || p.particles > 100000) bad("particles must be in 1..100000");
@@ -43,7 +23,8 @@ PsoResult pso_maximise(int dims, const PsoParams& params, const SwarmObjective& 
   if (dims < 1) throw Error("PSO needs at least one dimension");
   const auto n = static_cast<std::size_t>(params.particles);
   const auto d = static_cast<std::size_t>(dims);
-  Rng rng(params.seed);
+  // SplitMix64, not <random>'s distributions: a seed gives the same swarm with any standard library.
+  SplitMix64 rng(params.seed);
   std::vector<double> x(n * d), v(n * d), scores(n);
   for (double& xi : x) xi = rng.uniform();
   for (double& vi : v) vi = 0.2 * rng.uniform() - 0.1;

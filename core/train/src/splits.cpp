@@ -5,18 +5,10 @@
 #include <numeric>
 
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/train/random.hpp"
 
 namespace fieldlines {
 namespace {
-
-// splitmix64: tiny, and unlike std::uniform_int_distribution its output is fixed by the
-// standard-free algorithm, so a seed gives the same split with any standard library.
-std::uint64_t next(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
 
 // The units being split: rows, or images.
 std::size_t unit_count(const LabelledSet& data, SplitMode mode) {
@@ -46,10 +38,11 @@ bool parse_split_mode(std::string_view text, SplitMode& out) {
 std::vector<std::size_t> seeded_permutation(std::size_t n, std::uint64_t seed) {
   std::vector<std::size_t> p(n);
   std::iota(p.begin(), p.end(), std::size_t{0});
-  std::uint64_t state = seed;
+  // SplitMix64, not std::uniform_int_distribution: a seed gives the same split with any standard library.
+  SplitMix64 rng(seed);
   for (std::size_t i = n; i > 1; --i) {
     // Modulo bias is below 2^-40 for any realistic n.
-    const auto j = static_cast<std::size_t>(next(state) % i);
+    const auto j = static_cast<std::size_t>(rng.next() % i);
     std::swap(p[i - 1], p[j]);
   }
   return p;
