@@ -3,17 +3,19 @@
 #include "fieldlines/data/reference_csv.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
 
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/data/image_io.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
+#include "fieldlines/train/splits.hpp"
 
 namespace fieldlines::studio {
 
 StudioController::StudioController(Project project, std::filesystem::path project_file, ControllerOptions options)
     : project_(std::move(project)), project_file_(std::move(project_file)), options_(options) {
-  if (options_.test_every < 2) options_.test_every = 0;
+  resplit();
   rebuild_all_features();
   load_current_pixels();
 }
@@ -109,6 +111,7 @@ void StudioController::rebuild_all_features() {
 // ---------------------------------------------------------------- labelling
 
 void StudioController::after_label_change() {
+  resplit();
   recount();
   autosave();
 }
@@ -185,18 +188,82 @@ void StudioController::reclassify() {
   recount();
 }
 
+void StudioController::set_split_spec(const SplitSpec& spec) {
+  if (spec == project_.split) return;
+  project_.split = spec;
+  settings_dirty_ = true;
+  settings_changed_at_ = -1;
+  resplit();
+  recount();
+}
+
 bool StudioController::is_test_image(std::size_t index) const {
-  return options_.test_every > 0 && (index + 1) % static_cast<std::size_t>(options_.test_every) == 0;
+  if (index >= in_test_.size()) return false;
+  return std::find(in_test_[index].begin(), in_test_[index].end(), 1) != in_test_[index].end();
+}
+
+bool StudioController::is_test_segment(std::size_t image, std::size_t segment) const {
+  return image < in_test_.size() && segment < in_test_[image].size() && in_test_[image][segment];
+}
+
+void StudioController::resplit() {
+  in_test_.assign(image_count(), {});
+  train_segments_ = test_segments_ = test_images_ = 0;
+  split_error_.clear();
+  for (std::size_t img = 0; img < image_count(); ++img) in_test_[img].assign(project_.images[img].segments.size(), 0);
+  // The very set `fieldlines train project.json` splits: labelled segments, image by image.
+  const LabelledSet labelled = project_.labelled();
+  if (labelled.size() == 0) return;
+  Split split;
+  try {
+    split = split_train_test(labelled, project_.split);
+  } catch (const std::exception& e) {
+    split_error_ = e.what();  // a bad spec: everything counts as train, the summary says why
+    train_segments_ = labelled.size();
+    return;
+  }
+  std::vector<char> test_row(labelled.size(), 0);
+  for (const std::size_t row : split.test) test_row[row] = 1;
+  // labelled() lists labelled segments in image order, then segment order: row k is the k-th here.
+  std::size_t row = 0;
+  for (std::size_t img = 0; img < image_count(); ++img) {
+    const auto& segs = project_.images[img].segments;
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      if (segs[i].label != Label::Unlabelled) in_test_[img][i] = test_row[row++];
+    }
+    test_images_ += is_test_image(img);
+  }
+  train_segments_ = split.train.size();
+  test_segments_ = split.test.size();
+}
+
+std::string StudioController::split_summary() const {
+  const SplitSpec& spec = project_.split;
+  const bool by_image = spec.mode == SplitMode::ByImage;
+  const std::string how = std::string("split by ") + std::string(to_string(spec.mode)) + ", " +
+                          std::to_string(static_cast<int>(std::lround(spec.train_fraction * 100))) + " % train, seed " +
+                          std::to_string(spec.seed);
+  if (!split_error_.empty()) return "no test split: " + split_error_;
+  const std::size_t labelled = train_segments_ + test_segments_;
+  if (labelled == 0) return "no labelled segments yet, so no test split (" + how + ")";
+  if (test_segments_ == 0) {
+    return "test split empty: all " + std::to_string(labelled) + " labelled segments fall in train (" + how +
+           "); " + (by_image ? "label another image" : "label more segments") + " or lower the train fraction";
+  }
+  return "test split: " + std::to_string(test_segments_) + " of " + std::to_string(labelled) +
+         " labelled segments in " + std::to_string(test_images_) + " image" + (test_images_ == 1 ? "" : "s") + " (" +
+         how + ")";
 }
 
 void StudioController::recount() {
   train_counts_ = {};
   test_counts_ = {};
   for (std::size_t img = 0; img < image_count(); ++img) {
-    Counts& counts = is_test_image(img) ? test_counts_ : train_counts_;
     const auto& segs = project_.images[img].segments;
     for (std::size_t i = 0; i < segs.size(); ++i) {
-      if (segs[i].label != Label::Unlabelled) tally(counts, segs[i].label, predictions_[img][i]);
+      if (segs[i].label != Label::Unlabelled) {
+        tally(is_test_segment(img, i) ? test_counts_ : train_counts_, segs[i].label, predictions_[img][i]);
+      }
     }
   }
 }
@@ -255,11 +322,18 @@ void StudioController::export_thresholds(const std::filesystem::path& path) cons
     };
     return nlohmann::json{{"marking", one(c.marking)}, {"boundary", one(c.boundary)}};
   };
+  // An empty part has no figures (null, as `fieldlines train` writes an empty test part).
+  const auto part = [&](const Counts& c, std::size_t segments) { return segments ? metrics(c) : nlohmann::json(nullptr); };
+  // The split under the keys `fieldlines train` uses, so both provenances read alike.
   file.provenance = {{"tool", "fieldlines-studio"},
                      {"project", project_file_.string()},
                      {"labelled_segments", labelled_total()},
-                     {"train", metrics(train_counts_)},
-                     {"test", metrics(test_counts_)}};
+                     {"split", to_string(project_.split.mode)},
+                     {"train_fraction", project_.split.train_fraction},
+                     {"seed", project_.split.seed},
+                     {"counts", {{"train_segments", train_segments_}, {"test_segments", test_segments_}}},
+                     {"train", part(train_counts_, train_segments_)},
+                     {"test", part(test_counts_, test_segments_)}};
   save_thresholds_file(path, file);
 }
 
@@ -311,8 +385,9 @@ void StudioController::detect_all(bool only_undetected) {
 void StudioController::start_training(const TrainParams& params) {
   std::vector<Segment> train_set, test_set;
   for (std::size_t img = 0; img < image_count(); ++img) {
-    for (const Segment& s : project_.images[img].segments) {
-      if (s.label != Label::Unlabelled) (is_test_image(img) ? test_set : train_set).push_back(s);
+    const auto& segs = project_.images[img].segments;
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      if (segs[i].label != Label::Unlabelled) (is_test_segment(img, i) ? test_set : train_set).push_back(segs[i]);
     }
   }
   training_.start(std::move(train_set), std::move(test_set), project_.thresholds, params);
@@ -376,6 +451,7 @@ void StudioController::poll(double now_s) {
   if (changed) {
     history_.clear();  // edits may refer to segments that no longer exist
     if (hovered_ && *hovered_ >= segments().size()) hovered_.reset();
+    resplit();
     recount();
     autosave();
   }

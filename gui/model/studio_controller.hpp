@@ -25,7 +25,6 @@ namespace fieldlines::studio {
 struct ControllerOptions {
   bool autosave = true;  // save the project atomically after every label edit
   bool load_pixels = true;  // read the current image from disk (tests can skip it)
-  int test_every = 5;       // every n-th image (1-based index % n == 0) is in the test split
 };
 
 // What the background detections since the last detect_all() did: how many images, the labels
@@ -90,7 +89,19 @@ class StudioController {
   void set_thresholds(const Thresholds& thresholds);
   const Counts& train_counts() const { return train_counts_; }
   const Counts& test_counts() const { return test_counts_; }
-  bool is_test_image(std::size_t index) const;
+
+  // --- the test split: split_train_test (fieldlines/train/splits.hpp) of the LABELLED segments
+  // with the project's SplitSpec, so the studio tests on what `fieldlines train` would with the
+  // same parameters. It is re-drawn whenever labels change; unlabelled segments are in neither part.
+  const SplitSpec& split_spec() const { return project_.split; }
+  // Saved in the project like thresholds (after a pause, or flush()).
+  void set_split_spec(const SplitSpec& spec);
+  bool is_test_image(std::size_t index) const;  // holds a labelled segment of the test split
+  bool is_test_segment(std::size_t image, std::size_t segment) const;
+  std::size_t train_segment_count() const { return train_segments_; }
+  std::size_t test_segment_count() const { return test_segments_; }
+  // One line for the panels: the split's sizes and parameters, or why its test part is empty.
+  std::string split_summary() const;
   ImageProgress progress(std::size_t image) const;
   std::size_t labelled_total() const;
 
@@ -141,6 +152,7 @@ class StudioController {
   void rebuild_features(std::size_t image);
   void rebuild_all_features();
   void reclassify();
+  void resplit();  // after any change of labels, segments or the split spec; before recount()
   void recount();
   void after_label_change();
   void autosave();
@@ -159,6 +171,9 @@ class StudioController {
   std::vector<std::vector<SegmentFeatures>> features_;  // per image, per segment
   std::vector<std::vector<Label>> predictions_;         // per image, per segment
   Counts train_counts_, test_counts_;
+  std::vector<std::vector<char>> in_test_;  // per image, per segment: labelled and in the test split
+  std::size_t train_segments_ = 0, test_segments_ = 0, test_images_ = 0;
+  std::string split_error_;
   std::size_t save_count_ = 0;
   std::string save_error_;
   DetectionJob detection_;

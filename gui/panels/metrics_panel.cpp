@@ -1,6 +1,7 @@
 // Metrics tab: live precision/recall/F1 per class on both splits, detection and frame times.
 #include <imgui.h>
 
+#include "gui/model/figures.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
@@ -14,14 +15,13 @@ void counts_table(const char* id, const Counts& train, const Counts& test) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(name);
+    for (const double figure : {c.precision(), c.recall(), c.f1()}) {
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(studio::format_figure(c, figure).c_str());
+    }
     ImGui::TableNextColumn();
-    ImGui::Text("%.3f", c.precision());
-    ImGui::TableNextColumn();
-    ImGui::Text("%.3f", c.recall());
-    ImGui::TableNextColumn();
-    ImGui::Text("%.3f", c.f1());
-    ImGui::TableNextColumn();
-    ImGui::Text("%ld/%ld/%ld", c.tp, c.fp, c.fn);
+    if (studio::has_data(c)) ImGui::Text("%ld/%ld/%ld", c.tp, c.fp, c.fn);
+    else ImGui::TextUnformatted("n/a");
   };
   row("marking train", train.marking);
   row("marking test", test.marking);
@@ -32,7 +32,8 @@ void counts_table(const char* id, const Counts& train, const Counts& test) {
 }  // namespace
 
 void draw_metrics_panel(studio::StudioController& controller, UiState& ui) {
-  ImGui::TextUnformatted("Current thresholds vs labels (test = every 5th image)");
+  ImGui::TextUnformatted("Current thresholds vs labels");
+  ImGui::TextWrapped("%s", controller.split_summary().c_str());
   counts_table("counts", controller.train_counts(), controller.test_counts());
   ImGui::Separator();
   ImGui::Text("detection: this image %.2f ms, project mean %.2f ms", controller.current_detect_ms(),

@@ -2,6 +2,7 @@
 // and the detector's main parameters (used by the next background detection).
 #include <imgui.h>
 
+#include "gui/model/figures.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
@@ -23,6 +24,10 @@ bool class_sliders(const char* name, ClassThresholds& t, bool& released) {
 }
 
 void counts_line(const char* name, const ClassCounts& c) {
+  if (!studio::has_data(c)) {
+    ImGui::Text("%-9s n/a (no labelled or predicted segment)", name);
+    return;
+  }
   ImGui::Text("%-9s P %.3f  R %.3f  F1 %.3f  (TP %ld FP %ld FN %ld)", name, c.precision(), c.recall(), c.f1(), c.tp,
               c.fp, c.fn);
 }
@@ -44,9 +49,10 @@ void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/
   ImGui::TextUnformatted("Labelled data with these thresholds, train split:");
   counts_line("marking", controller.train_counts().marking);
   counts_line("boundary", controller.train_counts().boundary);
-  ImGui::TextDisabled("test split (every 5th image):");
+  ImGui::TextDisabled("test split:");
   counts_line("marking", controller.test_counts().marking);
   counts_line("boundary", controller.test_counts().boundary);
+  ImGui::TextWrapped("%s", controller.split_summary().c_str());
 
   ImGui::Separator();
   ImGui::TextUnformatted("Detector (applies to the next detection)");

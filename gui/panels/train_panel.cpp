@@ -1,11 +1,13 @@
 // Train tab: PSO settings, Start/Stop, live best-score plot and particle scatter, results, Apply.
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <utility>
 #include <vector>
 
 #include <imgui.h>
 
+#include "gui/model/figures.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
@@ -65,7 +67,10 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
 
   if (!job.running()) {
     if (ImGui::Button("Start training")) controller.start_training(p);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("trains on the train split; the test split is every 5th image");
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("trains on the train split, reports both splits\n%s", controller.split_summary().c_str());
+    }
+    if (controller.test_segment_count() == 0) ImGui::TextColored({1, 0.7f, 0.3f, 1}, "%s", controller.split_summary().c_str());
   } else if (ImGui::Button("Stop")) {
     controller.cancel_training();
   }
@@ -98,11 +103,31 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
       ImGui::Text("%s after %d iterations, score %.3f", outcome->result.cancelled ? "stopped" : "finished",
                   outcome->result.iterations_run, outcome->result.score);
       for (const auto& [name, c] : {std::pair{"train", outcome->train_counts}, std::pair{"test", outcome->test_counts}}) {
-        ImGui::Text("%-5s marking P %.3f R %.3f | boundary P %.3f R %.3f", name, c.marking.precision(),
-                    c.marking.recall(), c.boundary.precision(), c.boundary.recall());
+        ImGui::Text("%-5s marking P %s R %s | boundary P %s R %s", name,
+                    studio::format_figure(c.marking, c.marking.precision()).c_str(),
+                    studio::format_figure(c.marking, c.marking.recall()).c_str(),
+                    studio::format_figure(c.boundary, c.boundary.precision()).c_str(),
+                    studio::format_figure(c.boundary, c.boundary.recall()).c_str());
       }
       if (ImGui::Button("Apply these thresholds")) controller.apply_training_result();
     }
+  }
+  // Below the plots, so they keep their place. The parameters live in the project (as
+  // `fieldlines train --split --train-fraction --seed`); a change re-draws the split at once.
+  ImGui::Separator();
+  if (ImGui::CollapsingHeader("Test split")) {
+    ImGui::BeginDisabled(job.running());
+    SplitSpec split = controller.split_spec();
+    int by_row = split.mode == SplitMode::ByRow;
+    ImGui::Combo("split by", &by_row, "image\0row\0");
+    split.mode = by_row ? SplitMode::ByRow : SplitMode::ByImage;
+    float fraction = static_cast<float>(split.train_fraction);
+    if (ImGui::SliderFloat("train fraction", &fraction, 0.05f, 1, "%.2f")) split.train_fraction = fraction;
+    int seed = static_cast<int>(split.seed);
+    if (ImGui::InputInt("split seed", &seed) && seed >= 0) split.seed = static_cast<std::uint64_t>(seed);
+    controller.set_split_spec(split);
+    ImGui::EndDisabled();
+    ImGui::TextWrapped("%s", controller.split_summary().c_str());
   }
 }
 

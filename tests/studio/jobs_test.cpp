@@ -96,7 +96,7 @@ TEST(TrainingJob, RunsToTheEndAndReportsEveryIteration) {
   }
   ASSERT_TRUE(c.training().latest().has_value());
   EXPECT_EQ(c.training().latest()->particles.size(), 12u);
-  // The test split (image 5) is counted apart from the train split.
+  // The test split (2 of the 6 labelled images) is counted apart from the train split.
   EXPECT_GT(outcome->test_counts.marking.tp + outcome->test_counts.marking.fn, 0);
 
   ASSERT_TRUE(c.apply_training_result());

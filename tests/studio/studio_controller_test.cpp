@@ -9,11 +9,16 @@
 #include <algorithm>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/data/project.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/data/reference_csv.hpp"
 #include "fixtures.hpp"
+#include "fieldlines/train/metrics.hpp"
+#include "fieldlines/train/splits.hpp"
+#include "gui/model/figures.hpp"
 #include "gui/model/studio_controller.hpp"
 
 namespace fs = fieldlines::studio;
@@ -191,20 +196,112 @@ TEST(StudioController, FlushSavesPendingSettings) {
   EXPECT_EQ(s.on_disk().detector.gradient_threshold, 55);
 }
 
-TEST(StudioController, TrainAndTestSplitsCountSeparately) {
-  Session s(5);  // image index 4 (the 5th) is the test split
-  EXPECT_TRUE(s.controller.is_test_image(4));
-  EXPECT_FALSE(s.controller.is_test_image(0));
-  const std::size_t all[] = {0, 1, 2, 3, 4, 5};
-  s.controller.select_image(4);
-  s.controller.label(all, Label::Marking);
+namespace {
+
+// Labels image `image` of a Session by the fixture's truth (even segments markings, odd ones
+// boundaries), except that `wrong` labels the first marking as a boundary.
+void label_truth(fs::StudioController& c, std::size_t image, bool wrong = false) {
+  c.select_image(image);
+  const std::size_t evens[] = {0, 2, 4}, odds[] = {1, 3, 5}, first[] = {0};
+  c.label(evens, Label::Marking);
+  c.label(odds, Label::Boundary);
+  if (wrong) c.label(first, Label::Boundary);
+}
+
+}  // namespace
+
+TEST(StudioController, TestSplitIsTheCliSplitOfTheLabelledSegments) {
+  Session s(6);
+  for (std::size_t img = 0; img < 6; ++img) label_truth(s.controller, img, img % 2 == 1);
+  // What `fieldlines train project.json` splits: the project's labelled set, the same function.
+  const Project p = s.on_disk();
+  EXPECT_EQ(p.split, fieldlines::SplitSpec{});
+  const fieldlines::LabelledSet all = p.labelled();
+  const fieldlines::Split split = fieldlines::split_train_test(all, p.split);
+  ASSERT_FALSE(split.test.empty());
+  EXPECT_EQ(s.controller.test_segment_count(), split.test.size());
+  EXPECT_EQ(s.controller.train_segment_count(), split.train.size());
+  EXPECT_EQ(s.controller.test_counts(), fieldlines::evaluate(all.subset(split.test), p.thresholds).total);
+  EXPECT_EQ(s.controller.train_counts(), fieldlines::evaluate(all.subset(split.train), p.thresholds).total);
+  std::size_t test_images = 0;
+  for (std::size_t img = 0; img < 6; ++img) test_images += s.controller.is_test_image(img);
+  EXPECT_EQ(test_images, 2u);  // by image, 70 % of 6 images in train
+  EXPECT_NE(s.controller.split_summary().find("test split: 12 of 36"), std::string::npos) << s.controller.split_summary();
+}
+
+TEST(StudioController, OnlyLabelledImagesAreSplit) {
+  Session s(5);
+  label_truth(s.controller, 3);
+  label_truth(s.controller, 4);
+  // Two labelled images, 70 % train: one each side; unlabelled images are in neither part.
+  EXPECT_NE(s.controller.is_test_image(3), s.controller.is_test_image(4));
+  for (std::size_t img = 0; img < 3; ++img) EXPECT_FALSE(s.controller.is_test_image(img)) << img;
+  EXPECT_EQ(s.controller.test_segment_count(), 6u);
   EXPECT_EQ(s.controller.test_counts().marking.tp, 3);
-  EXPECT_EQ(s.controller.test_counts().marking.fn, 3);
-  EXPECT_EQ(s.controller.train_counts().marking.tp, 0);
-  s.controller.select_image(1);
-  s.controller.label(all, Label::Marking);
   EXPECT_EQ(s.controller.train_counts().marking.tp, 3);
   EXPECT_EQ(s.controller.labelled_total(), 12u);
+}
+
+TEST(StudioController, EmptyTestSplitIsSaidAndShowsNoNumber) {
+  Session s(5);
+  EXPECT_NE(s.controller.split_summary().find("no labelled segments"), std::string::npos);
+  label_truth(s.controller, 0);  // one labelled image: it must train, nothing is left to test
+  EXPECT_EQ(s.controller.test_segment_count(), 0u);
+  EXPECT_NE(s.controller.split_summary().find("test split empty"), std::string::npos) << s.controller.split_summary();
+  const auto& test = s.controller.test_counts().marking;
+  EXPECT_EQ(fs::format_figure(test, test.precision()), "n/a");
+  const auto& train = s.controller.train_counts().marking;
+  EXPECT_EQ(fs::format_figure(train, train.precision()), "1.000");
+  const auto out = s.dir.path() / "robot.json";
+  s.controller.export_thresholds(out);
+  const auto provenance = nlohmann::json::parse(fieldlines::read_file(out))["provenance"];
+  EXPECT_TRUE(provenance["test"].is_null()) << provenance.dump();
+  EXPECT_FALSE(provenance["train"].is_null());
+  EXPECT_EQ(provenance["counts"]["test_segments"], 0);
+}
+
+TEST(StudioController, SplitSpecIsRecordedInTheProjectAndTheProvenance) {
+  Session s(4);
+  for (std::size_t img = 0; img < 4; ++img) label_truth(s.controller, img);
+  const fieldlines::SplitSpec spec{fieldlines::SplitMode::ByRow, 0.5, 7};
+  s.controller.set_split_spec(spec);
+  EXPECT_TRUE(s.controller.has_unsaved_settings());
+  EXPECT_EQ(s.controller.test_segment_count(), 12u);  // half of 24 rows
+  s.controller.flush();
+  EXPECT_EQ(s.on_disk().split, spec);
+  const auto out = s.dir.path() / "robot.json";
+  s.controller.export_thresholds(out);
+  const auto provenance = nlohmann::json::parse(fieldlines::read_file(out))["provenance"];
+  EXPECT_EQ(provenance["split"], "row");
+  EXPECT_EQ(provenance["train_fraction"], 0.5);
+  EXPECT_EQ(provenance["seed"], 7);
+  EXPECT_EQ(provenance["counts"]["test_segments"], 12);
+  EXPECT_FALSE(provenance["test"].is_null());
+  // Reopened, the studio splits the same way.
+  fs::StudioController again(Project::load(s.file), s.file);
+  EXPECT_EQ(again.test_counts(), s.controller.test_counts());
+}
+
+TEST(StudioController, ProjectWithoutSplitLoadsWithTheCliDefaults) {
+  studio_test::TempDir dir("split-schema");
+  const auto file = studio_test::write_project(dir.path(), 1, 2);
+  auto j = nlohmann::json::parse(fieldlines::read_file(file));
+  ASSERT_TRUE(j.contains("split"));
+  j.erase("split");  // a project written before the split was recorded
+  fieldlines::write_file_atomically(file, j.dump());
+  const fieldlines::SplitSpec defaults = Project::load(file).split;
+  EXPECT_EQ(defaults.mode, fieldlines::SplitMode::ByImage);  // `fieldlines train`'s defaults
+  EXPECT_EQ(defaults.train_fraction, 0.7);
+  EXPECT_EQ(defaults.seed, 1u);
+  j["split"] = {{"seed", 3}};
+  fieldlines::write_file_atomically(file, j.dump());
+  EXPECT_EQ(Project::load(file).split, (fieldlines::SplitSpec{fieldlines::SplitMode::ByImage, 0.7, 3}));
+  for (const nlohmann::json& bad : {nlohmann::json{{"mode", "pixel"}}, nlohmann::json{{"train_fraction", 0}},
+                                   nlohmann::json{{"seed", -1}}, nlohmann::json(3)}) {
+    j["split"] = bad;
+    fieldlines::write_file_atomically(file, j.dump());
+    EXPECT_THROW(Project::load(file), fieldlines::Error) << bad.dump();
+  }
 }
 
 TEST(StudioController, NextImageWithErrors) {

@@ -56,6 +56,7 @@ Project parse_project(const std::string& text, const std::string& where) {
   if (!j.contains("detector")) throw Error(where + ": missing field 'detector'");
   p.detector = detector_params_from_json(j["detector"], where + ": detector");
   p.thresholds = thresholds_from_json(j, where);
+  if (j.contains("split")) p.split = split_spec_from_json(j["split"], where + ": split");
   if (!j.contains("segment_columns") || j["segment_columns"] != json(kColumns))
     throw Error(where + ": 'segment_columns' must be " + json(kColumns).dump());
   if (!j.contains("images") || !j["images"].is_array()) throw Error(where + ": missing array 'images'");
@@ -145,6 +146,7 @@ void Project::save(const std::filesystem::path& file) const {
   json j = {{"format", "fieldlines-project"}, {"version", kProjectVersion}};
   j["detector"] = detector_params_to_json(detector);
   j.update(thresholds_to_json(thresholds));
+  j["split"] = split_spec_to_json(split);
   j["segment_columns"] = kColumns;
   json images_json = json::array();
   for (const ImageEntry& e : images) {

@@ -26,15 +26,6 @@ Split assign(const LabelledSet& data, SplitMode mode, const std::vector<char>& u
 
 }  // namespace
 
-std::string_view to_string(SplitMode mode) { return mode == SplitMode::ByRow ? "row" : "image"; }
-
-bool parse_split_mode(std::string_view text, SplitMode& out) {
-  if (text == "row") out = SplitMode::ByRow;
-  else if (text == "image") out = SplitMode::ByImage;
-  else return false;
-  return true;
-}
-
 std::vector<std::size_t> seeded_permutation(std::size_t n, std::uint64_t seed) {
   std::vector<std::size_t> p(n);
   std::iota(p.begin(), p.end(), std::size_t{0});

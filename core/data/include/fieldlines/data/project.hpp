@@ -5,6 +5,8 @@
 // File schema (version 1; paths are relative to the project file's folder):
 //   { "format": "fieldlines-project", "version": 1,
 //     "detector": { DetectorParams }, "gradient_mode": ..., "classes": { ... },   (as thresholds file)
+//     "split": { "mode": "image" | "row", "train_fraction": 0.7, "seed": 1 },  (optional: the test
+//              split of fieldlines/data/split_spec.hpp; absent fields take these, the CLI's, defaults)
 //     "segment_columns": ["x0","y0","x1","y1","saliency","gx_r","gx_g","gx_b","gy_r","gy_g","gy_b","label"],
 //     "images": [ { "path": "frames/0001.png", "detect_ms": 3.1,
 //                   "segments": [[x0, y0, x1, y1, saliency, gx.., gy.., "marking"], ...] } ] }
@@ -19,6 +21,7 @@
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/data/labelled_set.hpp"
 #include "fieldlines/data/reference_csv.hpp"
+#include "fieldlines/data/split_spec.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
@@ -68,6 +71,7 @@ class Project {
 
   DetectorParams detector;
   Thresholds thresholds;
+  SplitSpec split;  // how the labelled segments divide into train and test
   std::vector<ImageEntry> images;
 };
 

@@ -6,13 +6,9 @@
 #include <vector>
 
 #include "fieldlines/data/labelled_set.hpp"
+#include "fieldlines/data/split_spec.hpp"  // SplitMode, SplitSpec (recorded in project files)
 
 namespace fieldlines {
-
-enum class SplitMode { ByImage, ByRow };
-
-std::string_view to_string(SplitMode mode);
-bool parse_split_mode(std::string_view text, SplitMode& out);  // "image" or "row"
 
 struct Split {
   std::vector<std::size_t> train, test;  // segment indices, ascending
@@ -22,6 +18,10 @@ struct Split {
 // rounded, with at least one unit in train. Throws fieldlines::Error on a bad fraction.
 Split split_train_test(const LabelledSet& data, SplitMode mode, double train_fraction,
                        std::uint64_t seed);
+// The same with the parameters a project records: the studio's split, and the CLI's defaults.
+inline Split split_train_test(const LabelledSet& data, const SplitSpec& spec) {
+  return split_train_test(data, spec.mode, spec.train_fraction, spec.seed);
+}
 
 // k folds; fold i tests on the i-th of k near-equal parts and trains on the rest.
 // Throws fieldlines::Error when k < 2 or there are fewer units than folds.

@@ -1,0 +1,14 @@
+#include "gui/model/figures.hpp"
+
+#include <cstdio>
+
+namespace fieldlines::studio {
+
+std::string format_figure(const ClassCounts& c, double value) {
+  if (!has_data(c)) return "n/a";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", value);
+  return text;
+}
+
+}  // namespace fieldlines::studio
