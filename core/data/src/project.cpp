@@ -9,13 +9,16 @@
 
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/json_file.hpp"
 #include "fieldlines/detect/params_json.hpp"
-#include "fieldlines/detect/json_text.hpp"
 
 namespace fieldlines {
 namespace {
 
 using nlohmann::json;
+
+constexpr JsonFileFormat kFormat{"format", "fieldlines-project", "project file", "project", kProjectVersion,
+                                 JsonFileFormat::Newer::NotModified};
 
 const std::vector<std::string> kColumns = {"x0",   "y0",   "x1",   "y1",   "saliency", "gx_r",
                                            "gx_g", "gx_b", "gy_r", "gy_g", "gy_b",     "label"};
@@ -43,15 +46,7 @@ Segment segment_from_json(const json& j, const std::string& where) {
 // Parses the text as a project; throws with `where` in the message.
 Project parse_project(const std::string& text, const std::string& where) {
   const json j = parse_json_text(text, where + ": damaged project file");
-  if (!j.is_object() || j.value("format", std::string()) != "fieldlines-project")
-    throw Error(where + ": not a fieldlines project file (\"format\" must be \"fieldlines-project\")");
-  const auto v = j.find("version");
-  if (v == j.end() || !v->is_number_integer()) throw Error(where + ": missing integer \"version\"");
-  if (v->get<long long>() > kProjectVersion)
-    throw Error(where + ": project version " + std::to_string(v->get<long long>()) +
-                " was written by a newer fieldlines (this one reads up to " + std::to_string(kProjectVersion) +
-                "); it will not be modified");
-  if (v->get<long long>() < 1) throw Error(where + ": invalid project version");
+  require_json_file_format(j, kFormat, where);
   Project p;
   if (!j.contains("detector")) throw Error(where + ": missing field 'detector'");
   p.detector = detector_params_from_json(j["detector"], where + ": detector");
@@ -143,7 +138,7 @@ void Project::save(const std::filesystem::path& file) const {
       throw Error(std::string("refusing to overwrite: ") + e.what());
     }
   }
-  json j = {{"format", "fieldlines-project"}, {"version", kProjectVersion}};
+  json j = json_file_header(kFormat);
   j["detector"] = detector_params_to_json(detector);
   j.update(thresholds_to_json(thresholds));
   j["split"] = split_spec_to_json(split);

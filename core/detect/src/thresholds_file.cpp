@@ -2,15 +2,20 @@
 
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/json_file.hpp"
 #include "fieldlines/detect/params_json.hpp"
-#include "fieldlines/detect/json_text.hpp"
 
 namespace fieldlines {
 
 using nlohmann::json;
 
+namespace {
+constexpr JsonFileFormat kFormat{"format", "fieldlines-thresholds", "thresholds file", "thresholds file",
+                                 kThresholdsFileVersion, JsonFileFormat::Newer::UpdateFieldlines};
+}  // namespace
+
 json to_json(const ThresholdsFile& f) {
-  json j = {{"format", "fieldlines-thresholds"}, {"version", kThresholdsFileVersion}};
+  json j = json_file_header(kFormat);
   j["detector"] = detector_params_to_json(f.detector);
   j.update(thresholds_to_json(f.thresholds));
   j["provenance"] = f.provenance.is_null() ? json::object() : f.provenance;
@@ -18,17 +23,7 @@ json to_json(const ThresholdsFile& f) {
 }
 
 ThresholdsFile thresholds_file_from_json(const json& j, const std::string& where) {
-  if (!j.is_object()) throw Error(where + ": expected a JSON object");
-  if (j.value("format", std::string()) != "fieldlines-thresholds")
-    throw Error(where + ": not a fieldlines thresholds file (\"format\" must be \"fieldlines-thresholds\")");
-  const auto v = j.find("version");
-  if (v == j.end() || !v->is_number_integer()) throw Error(where + ": missing integer \"version\"");
-  const long long version = v->get<long long>();
-  if (version > kThresholdsFileVersion)
-    throw Error(where + ": thresholds file version " + std::to_string(version) +
-                " is newer than this fieldlines understands (" + std::to_string(kThresholdsFileVersion) +
-                "); update fieldlines");
-  if (version < 1) throw Error(where + ": invalid thresholds file version " + std::to_string(version));
+  require_json_file_format(j, kFormat, where);
   ThresholdsFile f;
   if (!j.contains("detector")) throw Error(where + ": missing field 'detector'");
   f.detector = detector_params_from_json(j["detector"], where + ": detector");

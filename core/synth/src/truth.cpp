@@ -8,7 +8,7 @@
 
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/error.hpp"
-#include "fieldlines/detect/json_text.hpp"
+#include "fieldlines/detect/json_file.hpp"
 
 namespace fieldlines::synth {
 namespace {
@@ -18,7 +18,8 @@ using Eigen::Vector3d;
 using nlohmann::json;
 
 constexpr double kRad = 180.0 / 3.14159265358979323846;
-constexpr const char* kSchema = "fieldlines-synth-truth";
+constexpr JsonFileFormat kFormat{"schema", "fieldlines-synth-truth", "synthetic ground truth", "ground-truth",
+                                 GroundTruth::kVersion, JsonFileFormat::Newer::UpdateFieldlines};
 
 // Douglas-Peucker on (x, y) that also keeps vertices where the width bends.
 void simplify(const std::vector<TruthPoint>& in, std::size_t a, std::size_t b, double tol,
@@ -191,37 +192,32 @@ json to_json(const GroundTruth& t) {
     }
     features.push_back({{"label", std::string(to_string(f.label))}, {"name", f.name}, {"points", pts}});
   }
-  return {{"schema", kSchema},
-          {"version", GroundTruth::kVersion},
-          {"image", t.image},
-          {"mask", t.mask},
-          {"scene", std::string(to_string(t.scene))},
-          {"condition", std::string(to_string(t.condition))},
-          {"seed", t.seed},
-          {"index", t.index},
-          {"line_width_m", t.line_width},
-          {"camera",
-           {{"width", t.intrinsics.width},
-            {"height", t.intrinsics.height},
-            {"fx", t.intrinsics.fx},
-            {"fy", t.intrinsics.fy},
-            {"cx", t.intrinsics.cx},
-            {"cy", t.intrinsics.cy},
-            {"position", {t.pose.position.x(), t.pose.position.y(), t.pose.position.z()}},
-            {"yaw_deg", t.pose.yaw * kRad},
-            {"pitch_deg", t.pose.pitch * kRad},
-            {"roll_deg", t.pose.roll * kRad}}},
-          {"mask_classes", {{"0", "other"}, {"1", "carpet"}, {"2", "paint"}, {"3", "field wall"}, {"4", "object"}}},
-          {"features", features}};
+  json j = json_file_header(kFormat);
+  j.update({{"image", t.image},
+            {"mask", t.mask},
+            {"scene", std::string(to_string(t.scene))},
+            {"condition", std::string(to_string(t.condition))},
+            {"seed", t.seed},
+            {"index", t.index},
+            {"line_width_m", t.line_width},
+            {"camera",
+             {{"width", t.intrinsics.width},
+              {"height", t.intrinsics.height},
+              {"fx", t.intrinsics.fx},
+              {"fy", t.intrinsics.fy},
+              {"cx", t.intrinsics.cx},
+              {"cy", t.intrinsics.cy},
+              {"position", {t.pose.position.x(), t.pose.position.y(), t.pose.position.z()}},
+              {"yaw_deg", t.pose.yaw * kRad},
+              {"pitch_deg", t.pose.pitch * kRad},
+              {"roll_deg", t.pose.roll * kRad}}},
+            {"mask_classes", {{"0", "other"}, {"1", "carpet"}, {"2", "paint"}, {"3", "field wall"}, {"4", "object"}}},
+            {"features", features}});
+  return j;
 }
 
 GroundTruth truth_from_json(const json& j, const std::string& ctx) {
-  if (get<std::string>(j, "schema", ctx) != kSchema)
-    throw Error(ctx + ": not a fieldlines synthetic ground truth (schema is not '" + kSchema + "')");
-  const int version = get<int>(j, "version", ctx);
-  if (version != GroundTruth::kVersion)
-    throw Error(ctx + ": unsupported ground-truth version " + std::to_string(version) + " (expected " +
-                std::to_string(GroundTruth::kVersion) + ")");
+  require_json_file_format(j, kFormat, ctx);
   GroundTruth t;
   t.image = get<std::string>(j, "image", ctx);
   t.mask = get<std::string>(j, "mask", ctx);
