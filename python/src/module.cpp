@@ -1,0 +1,243 @@
+// `import fieldlines`: the line detector, the classifier, the thresholds file and label-free
+// calibration, in the style of OpenCV's Python bindings (README, "Python").
+//
+// Errors: fieldlines::Error (bad input, bad values, malformed files) becomes ValueError; a file
+// that cannot be opened or written becomes OSError (FileNotFoundError, PermissionError, ...).
+// Threads: detect() and calibrate() release the GIL. A LineDetector owns reused buffers, so its
+// calls are serialised by its own mutex (one detector per thread runs in parallel). The mutex
+// is only ever waited for with the GIL released, so holding it and taking the GIL cannot
+// deadlock.
+#include <cerrno>
+#include <cstdio>
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <opencv2/core/utility.hpp>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "arrays.hpp"
+#include "fieldlines/data/image_io.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
+#include "fieldlines/train/calibrate.hpp"
+#include "json_dict.hpp"
+
+namespace py = pybind11;
+namespace fs = std::filesystem;
+
+namespace fieldlines::python {
+namespace {
+
+// OSError (with its errno subclass) when `path` cannot be opened for reading; fieldlines' own
+// readers only say "cannot read", which is not enough to tell a missing file from a bad one.
+void require_readable(const fs::path& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) {
+    errno = EISDIR;
+    PyErr_SetFromErrnoWithFilename(PyExc_OSError, path.c_str());
+    throw py::error_already_set();
+  }
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f == nullptr) {
+    PyErr_SetFromErrnoWithFilename(PyExc_OSError, path.c_str());
+    throw py::error_already_set();
+  }
+  std::fclose(f);
+}
+
+ThresholdsFile load_file(const fs::path& path) {
+  require_readable(path);
+  return load_thresholds_file(path);  // malformed content: Error -> ValueError
+}
+
+void save_file(const fs::path& path, const py::handle& thresholds) {
+  const ThresholdsFile file = thresholds_from_dict(thresholds, "thresholds");
+  try {
+    save_thresholds_file(path, file);
+  } catch (const Error& e) {
+    PyErr_SetString(PyExc_OSError, e.what());
+    throw py::error_already_set();
+  }
+}
+
+std::unique_lock<std::mutex> lock_without_gil(std::mutex& m) {
+  py::gil_scoped_release nogil;
+  return std::unique_lock<std::mutex>(m);
+}
+
+class Detector {
+ public:
+  explicit Detector(ThresholdsFile config)
+      : config_(std::move(config)), detector_(config_.detector, config_.thresholds) {}
+
+  py::array detect(const py::array& image) {
+    const cv::Mat view = image_view(image, "image");  // no copy; `image` outlives the call
+    std::unique_lock<std::mutex> lock;
+    {
+      py::gil_scoped_release nogil;
+      lock = std::unique_lock<std::mutex>(mutex_);
+      detector_.detect(view, segments_);
+    }
+    return segments_to_array(segments_);
+  }
+
+  py::dict thresholds() {
+    const auto lock = lock_without_gil(mutex_);
+    return thresholds_dict(config_);
+  }
+
+  void set_thresholds(const py::handle& thresholds) {
+    ThresholdsFile config = thresholds_from_dict(thresholds, "thresholds");
+    const auto lock = lock_without_gil(mutex_);
+    if (config.detector == config_.detector) {
+      detector_.set_thresholds(config.thresholds);  // keeps the warm buffers
+    } else {
+      detector_ = LineDetector(config.detector, config.thresholds);
+    }
+    config_ = std::move(config);
+  }
+
+ private:
+  std::mutex mutex_;
+  ThresholdsFile config_;
+  LineDetector detector_;
+  std::vector<Segment> segments_;  // reused: its capacity stays between calls
+};
+
+py::tuple labels() {
+  // Indexed by the int code of fieldlines::Label (0 none, 1 boundary, 2 marking).
+  py::tuple names(3);
+  for (const Label l : {Label::None, Label::Boundary, Label::Marking})
+    names[static_cast<std::size_t>(l)] = py::str(std::string(to_string(l)));
+  return names;
+}
+
+py::array classify_segments(const py::object& segments, const py::object& thresholds) {
+  const Thresholds t = thresholds.is_none() ? Thresholds{} : thresholds_from_dict(thresholds, "thresholds").thresholds;
+  const std::vector<Segment> in = segments_from_array(segments);
+  py::array_t<std::int8_t> out(static_cast<py::ssize_t>(in.size()));
+  auto* labels = out.mutable_data();
+  for (std::size_t i = 0; i < in.size(); ++i) labels[i] = static_cast<std::int8_t>(classify(in[i], t));
+  return out;
+}
+
+py::dict calibrate_images(const py::object& images, const py::object& thresholds) {
+  if (py::isinstance<py::array>(images))
+    throw py::type_error("images: expected a sequence of images, got one array (pass [image])");
+  if (!py::isinstance<py::iterable>(images))
+    throw py::type_error("images: expected a sequence of images (list of NumPy arrays)");
+  const ThresholdsFile start = thresholds.is_none() ? ThresholdsFile{} : thresholds_from_dict(thresholds, "thresholds");
+  // Every image is checked (and kept alive) before the GIL is released.
+  std::vector<py::array> arrays;
+  std::vector<cv::Mat> views;
+  for (const py::handle item : images) {
+    const std::string what = "images[" + std::to_string(arrays.size()) + "]";
+    if (!py::isinstance<py::array>(item))
+      throw py::type_error(what + ": expected a NumPy array, got " + py::str(py::type::of(item)).cast<std::string>());
+    arrays.push_back(py::reinterpret_borrow<py::array>(item));
+    views.push_back(image_view(arrays.back(), what));
+  }
+  Calibration fit;
+  Thresholds calibrated;
+  std::vector<Segment> all;
+  {
+    py::gil_scoped_release nogil;
+    LineDetector detector(start.detector, start.thresholds);
+    std::vector<Segment> found;
+    for (const cv::Mat& view : views) {
+      detector.detect(view, found);
+      all.insert(all.end(), found.begin(), found.end());
+    }
+    fit = calibrate(all, start.thresholds);
+  }
+  try {
+    calibrated = calibrated_thresholds(fit, start.thresholds);
+  } catch (const Error& e) {
+    throw py::value_error(std::string("calibration refused: ") + e.what());
+  }
+  ThresholdsFile file;
+  file.detector = start.detector;
+  file.thresholds = calibrated;
+  nlohmann::json& p = file.provenance;
+  p["method"] = "label-free";
+  p["inputs"] = "python: fieldlines.calibrate";
+  p["counts"] = {{"segments", all.size()}, {"images", views.size()}};
+  p["contrast_floor"] = fit.contrast_floor;
+  auto refused = [](const ClassCalibration& c) { return c.thresholds ? nlohmann::json(nullptr) : nlohmann::json(c.refused); };
+  p["fit"] = {{"marking", {{"fitted", fit.marking.thresholds.has_value()}, {"refused", refused(fit.marking)}}},
+              {"boundary", {{"fitted", fit.boundary.thresholds.has_value()}, {"refused", refused(fit.boundary)}}}};
+  p["fieldlines_version"] = FIELDLINES_VERSION;
+  return thresholds_dict(file);
+}
+
+py::array imread(const fs::path& path) {
+  require_readable(path);
+  return mat_to_array(to_bgr8(load_image(path)));
+}
+
+}  // namespace
+}  // namespace fieldlines::python
+
+PYBIND11_MODULE(fieldlines, m) {
+  using namespace fieldlines;
+  using namespace fieldlines::python;
+  m.doc() = "Soccer-field line detection (ELSED + colour transitions) for robots.";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const Error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+
+  m.attr("__version__") = FIELDLINES_VERSION;
+  m.attr("LABELS") = labels();
+  m.attr("LABEL_NONE") = static_cast<int>(Label::None);
+  m.attr("LABEL_BOUNDARY") = static_cast<int>(Label::Boundary);
+  m.attr("LABEL_MARKING") = static_cast<int>(Label::Marking);
+  m.attr("SEGMENT_DTYPE") = segment_dtype();
+
+  py::class_<Detector>(m, "LineDetector", R"(ELSED line segments with colour gradients, classified.
+
+LineDetector(thresholds=None): the authors' defaults, or a thresholds dict (the thresholds
+file's form, e.g. from load_thresholds_file or calibrate). Keep one per thread: it reuses its
+buffers between calls.)")
+      .def(py::init([](const py::object& thresholds) {
+             return new Detector(thresholds.is_none() ? ThresholdsFile{} : thresholds_from_dict(thresholds, "thresholds"));
+           }),
+           py::arg("thresholds") = py::none())
+      .def_static("from_thresholds_file", [](const fs::path& path) { return new Detector(load_file(path)); },
+                  py::arg("path"), "A detector with the parameters and thresholds of a thresholds file.")
+      .def("detect", &Detector::detect, py::arg("image"),
+           R"(Segments of an image: uint8 (or uint16) HxWx3 BGR, HxW grey or HxWx4 BGRA.
+
+Returns a 1-D structured array of SEGMENT_DTYPE: x0, y0, x1, y1 (pixels), saliency (validated
+pixels), grad_x, grad_y (3 x float32, R,G,B; grad_y image-down), label (int code into LABELS).
+A C-contiguous image (or a crop of one) is read without a copy; the GIL is released meanwhile.)")
+      .def_property("thresholds", &Detector::thresholds, &Detector::set_thresholds,
+                    "The detector's thresholds file as a dict; assign a dict to change it.")
+      .def("__repr__", [](Detector&) { return std::string("<fieldlines.LineDetector>"); });
+
+  m.def("load_thresholds_file", [](const fs::path& path) { return thresholds_dict(load_file(path)); },
+        py::arg("path"), "A thresholds file as a dict (validated; OSError if unreadable, ValueError if malformed).");
+  m.def("save_thresholds_file", &save_file, py::arg("path"), py::arg("thresholds"),
+        "Validates the dict and writes it atomically (ValueError if invalid, OSError if unwritable).");
+  m.def("classify", &classify_segments, py::arg("segments"), py::arg("thresholds") = py::none(),
+        "Label codes (int8 array) of segments (SEGMENT_DTYPE) under a thresholds dict (default: the authors').");
+  m.def("calibrate", &calibrate_images, py::arg("images"), py::arg("thresholds") = py::none(),
+        R"(Label-free calibration: a thresholds dict from a list of images, no labels needed.
+
+Detects every image with the detector parameters of `thresholds` (default: built-in), then fits
+both classes (fieldlines calibrate). Raises ValueError with the reason when the markings cannot
+be fitted; a class the images do not show is disabled (provenance.fit says why).)");
+  m.def("imread", &imread, py::arg("path"),
+        "An image file as uint8 HxWx3 BGR (16-bit scaled, grey replicated, alpha dropped), decoded as the CLI does.");
+  m.def("set_num_threads", [](int n) { cv::setNumThreads(n); }, py::arg("n"),
+        "OpenCV's thread count for the filters (cv2.setNumThreads); fieldlines bench times with 1.");
+  m.def("get_num_threads", [] { return cv::getNumThreads(); });
+}
