@@ -30,7 +30,7 @@ void validate(const DetectorParams& p) {
 
 struct LineDetector::Impl {
   ElsedEngine engine;
-  cv::Mat bgr8;  // the input normalised to 8-bit BGR, reused between calls
+  cv::Mat eight, bgr8;  // the input normalised to 8-bit BGR, reused between calls
 };
 
 LineDetector::LineDetector(DetectorParams params, Thresholds thresholds)
@@ -47,8 +47,7 @@ std::vector<Segment> LineDetector::detect(const cv::Mat& image) {
   return out;
 }
 
-void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
-  out.clear();
+const cv::Mat* LineDetector::normalise(const cv::Mat& image) {
   if (image.empty()) throw Error("empty image");
   const int depth = image.depth();
   if (depth != CV_8U && depth != CV_16U)
@@ -57,22 +56,39 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   const int channels = image.channels();
   if (channels != 1 && channels != 3 && channels != 4)
     throw Error("unsupported channel count " + std::to_string(channels) + " (expected 1, 3 or 4)");
+  if (image.rows < 3 || image.cols < 3) return nullptr;  // too small for any 3x3 window
 
-  // Normalise to 8-bit BGR. 16-bit is scaled (>> 8); grey is replicated so every channel
-  // carries the same gradient; alpha is dropped.
-  const cv::Mat* bgr = &image;
-  if (depth != CV_8U || channels != 3) {
-    cv::Mat eight;
-    if (depth == CV_16U) image.convertTo(eight, CV_8U, 1.0 / 256.0);
-    else eight = image;
-    if (channels == 1) cv::cvtColor(eight, impl_->bgr8, cv::COLOR_GRAY2BGR);
-    else if (channels == 4) cv::cvtColor(eight, impl_->bgr8, cv::COLOR_BGRA2BGR);
-    else impl_->bgr8 = eight.clone();
-    bgr = &impl_->bgr8;
+  // Normalise to 8-bit BGR into reused Mats. 16-bit is scaled (>> 8); grey is replicated so
+  // every channel carries the same gradient; alpha is dropped.
+  if (depth == CV_8U && channels == 3) return &image;
+  const cv::Mat* eight = &image;
+  if (depth == CV_16U) {
+    image.convertTo(impl_->eight, CV_8U, 1.0 / 256.0);
+    if (channels == 3) return &impl_->eight;
+    eight = &impl_->eight;
   }
-  if (bgr->rows < 3 || bgr->cols < 3) return;  // too small for any 3x3 window
+  cv::cvtColor(*eight, impl_->bgr8, channels == 1 ? cv::COLOR_GRAY2BGR : cv::COLOR_BGRA2BGR);
+  return &impl_->bgr8;
+}
+
+void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
+  out.clear();
+  const cv::Mat* bgr = normalise(image);
+  if (!bgr) return;
   impl_->engine.run(*bgr, params_, out);
   classify_all(out, thresholds_);
+}
+
+LineDetector::GradientViews LineDetector::compute_gradients(const cv::Mat& image) {
+  const cv::Mat* bgr = normalise(image);
+  if (!bgr) return {};
+  impl_->engine.compute_gradients(*bgr, params_);
+  const elsed::GradientMaps& g = impl_->engine.gradients();
+  // Views over the engine's buffers: the const_cast only satisfies cv::Mat's constructor.
+  const auto view = [&](const std::vector<std::int16_t>& v) {
+    return cv::Mat(g.height, g.width, CV_16SC1, const_cast<std::int16_t*>(v.data()));
+  };
+  return {view(g.dx), view(g.dy), view(g.mag)};
 }
 
 }  // namespace fieldlines

@@ -21,6 +21,7 @@ void EdgeDrawer::reset(const GradientMaps& maps, std::vector<Mark>& marks, const
   params_ = params;
   segments_.clear();
   stack_.clear();
+  prefixes_.clear();
   chain_.clear();
 }
 
@@ -31,12 +32,14 @@ void EdgeDrawer::draw_from_anchor(Pixel anchor) {
   // Only this anchor's own first-branch pixels may seed its other side: never a previous
   // anchor's (or a previous image's, whose pixels may lie outside this one).
   anchor_pixels_.clear();
-  stack_.push_back({first, anchor, true, {}});
+  stack_.push_back({first, anchor, true});
   chain_.push_back(anchor);
   draw_tree(anchor, anchor_pixels_, true);
   // The second direction starts with the first direction's unused pixels (reversed) so a line
   // through the anchor can be fitted across it.
-  stack_.push_back({opposite(first), anchor, true, anchor_pixels_});
+  const auto begin = static_cast<std::uint32_t>(prefixes_.size());
+  prefixes_.insert(prefixes_.end(), anchor_pixels_.begin(), anchor_pixels_.end());
+  stack_.push_back({opposite(first), anchor, true, begin, static_cast<std::uint32_t>(prefixes_.size())});
   draw_tree(anchor, anchor_pixels_, false);
 }
 
@@ -47,9 +50,9 @@ void EdgeDrawer::push_or_reuse(bool& reuse_top, Step step, Pixel px, bool first_
     b.step = step;
     b.px = px;
     b.first_side = first_side;
-    b.prefix.clear();
+    b.prefix_begin = b.prefix_end = 0;
   } else {
-    stack_.push_back({step, px, first_side, {}});
+    stack_.push_back({step, px, first_side});
   }
 }
 
@@ -72,7 +75,7 @@ void EdgeDrawer::draw_tree(Pixel anchor, std::vector<Pixel>& anchor_pixels, bool
     const Step step = top.step;
     Pixel px = top.px;
     const bool first_side = top.first_side;
-    chain_.insert(chain_.end(), top.prefix.begin(), top.prefix.end());
+    chain_.insert(chain_.end(), prefixes_.begin() + top.prefix_begin, prefixes_.begin() + top.prefix_end);
 
     int checked = branch_start;  // chain index where the next fit attempt starts
     outliers_.clear();
@@ -152,9 +155,11 @@ void EdgeDrawer::draw_tree(Pixel anchor, std::vector<Pixel>& anchor_pixels, bool
         if (maps_->dir[idx] == EdgeDir::Horizontal) predicted = last.x < px.x ? Step::Right : Step::Left;
         else predicted = last.y < px.y ? Step::Down : Step::Up;
         push_or_reuse(pop, predicted, px, true);  // `pop` is still true here: reuses the top
-        std::vector<Pixel>& prefix = stack_.back().prefix;
-        prefix.push_back(chain_.back());
-        prefix.insert(prefix.end(), outliers_.begin(), outliers_.end());
+        Branch& turn = stack_.back();
+        turn.prefix_begin = static_cast<std::uint32_t>(prefixes_.size());
+        prefixes_.push_back(chain_.back());
+        prefixes_.insert(prefixes_.end(), outliers_.begin(), outliers_.end());
+        turn.prefix_end = static_cast<std::uint32_t>(prefixes_.size());
       }
 
       const bool blocked = static_cast<int>(outliers_.size()) > kMaxOutliers || hit_owned;

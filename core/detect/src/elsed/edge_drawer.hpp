@@ -7,6 +7,7 @@
 // pixel already owned by another edge), the drawer tries to jump the discontinuity along the
 // line's own direction (junction sizes), checking on the far side that the edge goes on with the
 // same orientation (gradient structure tensor). Pending work is a stack of branches.
+#include <cstdint>
 #include <vector>
 
 #include "elsed_types.hpp"
@@ -38,8 +39,10 @@ class EdgeDrawer {
   struct Branch {
     Step step;
     Pixel px;
-    bool first_side;            // pixels extend the segment's first side (its end)
-    std::vector<Pixel> prefix;  // pixels to put on the chain before drawing
+    bool first_side;  // pixels extend the segment's first side (its end)
+    // Pixels to put on the chain before drawing: prefixes_[prefix_begin, prefix_end). A range
+    // in one pool rather than a vector per branch, so pushing a branch never allocates.
+    std::uint32_t prefix_begin = 0, prefix_end = 0;
   };
 
   void draw_tree(Pixel anchor, std::vector<Pixel>& anchor_pixels, bool first_call);
@@ -53,6 +56,7 @@ class EdgeDrawer {
   DrawerParams params_;
   std::vector<LineModel> segments_;
   std::vector<Branch> stack_;
+  std::vector<Pixel> prefixes_;  // every branch's prefix for this image, appended, cleared by reset
   std::vector<Pixel> chain_;
   // Scratch reused between calls.
   std::vector<Pixel> outliers_, extension_, to_validate_, anchor_pixels_;

@@ -1,10 +1,5 @@
 #include "elsed.hpp"
 
-#include <algorithm>
-#include <cstdlib>
-
-#include <opencv2/imgproc.hpp>
-
 #include "colour_gradients.hpp"
 
 namespace fieldlines {
@@ -13,36 +8,15 @@ using elsed::EdgeDir;
 using elsed::Mark;
 using elsed::Pixel;
 
-void ElsedEngine::compute_gradients(const DetectorParams& params) {
-  const cv::Mat* src = &gray_;
-  if (params.gaussian_kernel >= 3) {
-    cv::GaussianBlur(gray_, blurred_, cv::Size(params.gaussian_kernel, params.gaussian_kernel), params.gaussian_sigma);
-    src = &blurred_;
+void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& params) {
+  if (params.gaussian_kernel != pass_kernel_ || params.gaussian_sigma != pass_sigma_ ||
+      params.gradient_threshold != pass_threshold_) {
+    pass_.configure(params.gaussian_kernel, params.gaussian_sigma, params.gradient_threshold);
+    pass_kernel_ = params.gaussian_kernel;
+    pass_sigma_ = params.gaussian_sigma;
+    pass_threshold_ = params.gradient_threshold;
   }
-  const int w = src->cols, h = src->rows;
-  const std::size_t n = static_cast<std::size_t>(w) * h;
-  maps_.width = w;
-  maps_.height = h;
-  maps_.dx.resize(n);
-  maps_.dy.resize(n);
-  maps_.mag.resize(n);
-  maps_.dir.resize(n);
-  // Sobel straight into our buffers (no copies): wrap them as Mats.
-  dx_mat_ = cv::Mat(h, w, CV_16SC1, maps_.dx.data());
-  dy_mat_ = cv::Mat(h, w, CV_16SC1, maps_.dy.data());
-  cv::Sobel(*src, dx_mat_, CV_16S, 1, 0, 3, 1, 0, cv::BORDER_REPLICATE);
-  cv::Sobel(*src, dy_mat_, CV_16S, 0, 1, 3, 1, 0, cv::BORDER_REPLICATE);
-  const int threshold = params.gradient_threshold;
-  const std::int16_t* dx = maps_.dx.data();
-  const std::int16_t* dy = maps_.dy.data();
-  std::int16_t* mag = maps_.mag.data();
-  EdgeDir* dir = maps_.dir.data();
-  for (std::size_t i = 0; i < n; ++i) {
-    const int ax = std::abs(dx[i]), ay = std::abs(dy[i]);
-    const int sum = ax + ay;  // at most 2040 for 8-bit input: fits int16
-    mag[i] = static_cast<std::int16_t>(sum < threshold ? 0 : sum);
-    dir[i] = ax >= ay ? EdgeDir::Vertical : EdgeDir::Horizontal;
-  }
+  pass_.run(bgr, maps_);
 }
 
 void ElsedEngine::find_anchors(int scan_interval, int threshold) {
@@ -62,8 +36,7 @@ void ElsedEngine::find_anchors(int scan_interval, int threshold) {
 }
 
 void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, std::vector<Segment>& out) {
-  cv::cvtColor(bgr, gray_, cv::COLOR_BGR2GRAY);
-  compute_gradients(params);
+  compute_gradients(bgr, params);
 
   // With no anchor at all, retry with a halved threshold (down to zero) like the method.
   int anchor_threshold = params.anchor_threshold;
@@ -74,12 +47,12 @@ void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, std::vec
   }
 
   marks_.assign(maps_.mag.size(), Mark::Free);
-  elsed::DrawerParams dp;
+  elsed::DrawerParams& dp = drawer_params_;
   dp.line_fit_error = params.line_fit_error;
   dp.px_to_segment_dist = params.px_to_segment_dist;
   dp.min_line_length = params.min_line_length;
   dp.treat_junctions = params.treat_junctions;
-  dp.junction_sizes = params.junction_sizes;
+  dp.junction_sizes = params.junction_sizes;  // copy-assignment: reuses the capacity
   drawer_.reset(maps_, marks_, dp);
   const int w = maps_.width;
   for (const Pixel& a : anchors_) {

@@ -7,6 +7,7 @@
 
 #include "edge_drawer.hpp"
 #include "elsed_types.hpp"
+#include "gradient_pass.hpp"
 #include "fieldlines/detect/detector.hpp"
 
 namespace fieldlines {
@@ -15,12 +16,17 @@ class ElsedEngine {
  public:
   // bgr: 8-bit, 3 channels, at least 3x3. Appends unclassified segments to `out`.
   void run(const cv::Mat& bgr, const DetectorParams& params, std::vector<Segment>& out);
+  // The first stage alone (what run() starts with): fills gradients().
+  void compute_gradients(const cv::Mat& bgr, const DetectorParams& params);
+  const elsed::GradientMaps& gradients() const { return maps_; }
 
  private:
-  void compute_gradients(const DetectorParams& params);
   void find_anchors(int scan_interval, int threshold);
 
-  cv::Mat gray_, blurred_, dx_mat_, dy_mat_;
+  elsed::GradientPass pass_;
+  int pass_kernel_ = -1, pass_threshold_ = -1;  // what pass_ is configured for
+  double pass_sigma_ = -1;
+  elsed::DrawerParams drawer_params_;  // a member so its junction_sizes keeps its capacity
   elsed::GradientMaps maps_;
   std::vector<elsed::Mark> marks_;
   std::vector<elsed::Pixel> anchors_;

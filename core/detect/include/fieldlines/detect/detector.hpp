@@ -3,6 +3,8 @@
 //
 // Usage (OpenCV style):  fieldlines::LineDetector det;  auto segs = det.detect(bgr);
 // A LineDetector owns its working buffers and reuses them between calls, so keep one per thread.
+// Once it has seen a frame as large as the current one, detect(image, out) allocates nothing
+// for 8-bit BGR input (tests/detect_allocation_test.cpp counts every heap call).
 
 #include <memory>
 #include <vector>
@@ -47,12 +49,22 @@ class LineDetector {
   // Same, writing into `out` (cleared first) so a caller's vector keeps its capacity.
   void detect(const cv::Mat& image, std::vector<Segment>& out);
 
+  // The first stage alone, as detect() runs it: grey, Gaussian, Sobel x/y, |dx| + |dy| (zero
+  // below gradient_threshold). For benchmarks (the "gradients only" row) and tests. The views
+  // (CV_16SC1, no copy) stay valid until the next call on this detector. Same inputs as detect();
+  // an image smaller than 3x3 gives empty views.
+  struct GradientViews {
+    cv::Mat dx, dy, magnitude;
+  };
+  GradientViews compute_gradients(const cv::Mat& image);
+
   const DetectorParams& params() const { return params_; }
   const Thresholds& thresholds() const { return thresholds_; }
   void set_thresholds(const Thresholds& t) { thresholds_ = t; }
 
  private:
   struct Impl;
+  const cv::Mat* normalise(const cv::Mat& image);  // to 8-bit BGR; nullptr if smaller than 3x3
   DetectorParams params_;
   Thresholds thresholds_;
   std::unique_ptr<Impl> impl_;

@@ -1,0 +1,44 @@
+#pragma once
+// Private: the detector's first stage in one pass over the image, row by row.
+//
+// BGR -> grey -> Gaussian -> Sobel x/y -> L1 magnitude, edge direction and threshold, with only a
+// few rows in flight (a ring of smoothed rows), so the grey and blurred images are never written
+// out and the stage touches each input pixel once. Every step reproduces, bit for bit, what
+// OpenCV 4's 8-bit calls give (cvtColor BGR2GRAY, GaussianBlur with its fixed-point kernel and
+// BORDER_REFLECT_101, Sobel 3x3 CV_16S with BORDER_REPLICATE): the method's segments depend on
+// exact gradient ties, so "close" is not enough. tests/gradient_pass_test.cpp compares them.
+#include <cstdint>
+#include <vector>
+
+#include <opencv2/core/mat.hpp>
+
+#include "elsed_types.hpp"
+
+namespace fieldlines::elsed {
+
+// OpenCV's 8-bit Gaussian kernel: 8 fraction bits (raw values sum to 256), rounded by error
+// diffusion from the centre outwards as GaussianBlur builds it. ksize odd; < 3 gives {256}.
+void gaussian_kernel_q8(int ksize, double sigma, std::vector<std::uint16_t>& out);
+
+class GradientPass {
+ public:
+  // Allocates the kernel; call when the parameters change, not per frame.
+  void configure(int gaussian_kernel, double gaussian_sigma, int gradient_threshold);
+  // bgr: 8-bit, 3 channels, at least 1x1. Fills `maps` (resized by capacity), rows
+  // [row_begin, row_end) only; the whole image by default.
+  void run(const cv::Mat& bgr, GradientMaps& maps);
+  void run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begin, int row_end);
+
+ private:
+  void smooth_row_h(const cv::Mat& bgr, int source_row, std::uint16_t* out);
+
+  int radius_ = 0;
+  int threshold_ = 0;
+  std::vector<std::uint16_t> kernel_{256};
+  // Scratch, sized to the widest image seen. Rows carry slack so vector loops may run past w.
+  std::vector<std::uint8_t> grey_;     // one grey row with radius_ reflected pixels each side
+  std::vector<std::uint16_t> hrows_;   // ring of 2*radius_+1 horizontally smoothed rows
+  std::vector<std::uint8_t> brows_;    // ring of 3 smoothed rows, one replicated pixel each side
+};
+
+}  // namespace fieldlines::elsed

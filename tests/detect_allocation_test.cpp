@@ -1,0 +1,222 @@
+// A warm LineDetector::detect(image, out) makes no heap call: every buffer is the detector's
+// (or the caller's vector) and is reused by capacity. This executable counts every allocation:
+// it replaces malloc/calloc/realloc/posix_memalign/aligned_alloc/memalign/free (forwarding to
+// glibc's __libc_* functions) and the global operator new/delete. Under AddressSanitizer, which
+// owns malloc, it counts through ASan's allocator hooks instead, so the test runs there too.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdlib>
+#include <filesystem>
+#include <new>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "cli_test_support.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "shared_data.hpp"
+
+namespace {
+
+std::atomic<bool> g_counting{false};
+std::atomic<long> g_allocations{0};
+
+inline void note_allocation() {
+  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
+}
+
+}  // namespace
+
+#if defined(__SANITIZE_ADDRESS__)
+#define FIELDLINES_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FIELDLINES_ASAN 1
+#endif
+#endif
+
+#ifdef FIELDLINES_ASAN
+#include <sanitizer/allocator_interface.h>
+
+namespace {
+// ASan's interceptors must stay in charge of malloc and operator new; its hooks see every
+// allocation they serve (malloc, calloc, realloc, memalign family, new).
+void on_malloc(const volatile void*, std::size_t) { note_allocation(); }
+void on_free(const volatile void*) {}
+const int g_hooks_installed = __sanitizer_install_malloc_and_free_hooks(on_malloc, on_free);
+}  // namespace
+#else
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* ptr, std::size_t size);
+void* __libc_memalign(std::size_t alignment, std::size_t size);
+void __libc_free(void* ptr);
+
+void* malloc(std::size_t size) noexcept {
+  note_allocation();
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t count, std::size_t size) noexcept {
+  note_allocation();
+  return __libc_calloc(count, size);
+}
+void* realloc(void* ptr, std::size_t size) noexcept {
+  note_allocation();
+  return __libc_realloc(ptr, size);
+}
+void* memalign(std::size_t alignment, std::size_t size) noexcept {
+  note_allocation();
+  return __libc_memalign(alignment, size);
+}
+void* aligned_alloc(std::size_t alignment, std::size_t size) noexcept {
+  note_allocation();
+  return __libc_memalign(alignment, size);
+}
+int posix_memalign(void** out, std::size_t alignment, std::size_t size) noexcept {
+  note_allocation();
+  if (alignment % sizeof(void*) != 0 || (alignment & (alignment - 1)) != 0) return EINVAL;
+  void* p = __libc_memalign(alignment, size);
+  if (!p) return ENOMEM;
+  *out = p;
+  return 0;
+}
+void free(void* ptr) noexcept { __libc_free(ptr); }
+}  // extern "C"
+
+// Every operator new ends in the counting malloc / posix_memalign above.
+namespace {
+void* counted_new(std::size_t size) {
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void* counted_new(std::size_t size, std::align_val_t alignment) {
+  void* p = nullptr;
+  const std::size_t a = std::max(static_cast<std::size_t>(alignment), sizeof(void*));
+  if (posix_memalign(&p, a, size ? size : 1) != 0) throw std::bad_alloc();
+  return p;
+}
+}  // namespace
+
+void* operator new(std::size_t size) { return counted_new(size); }
+void* operator new[](std::size_t size) { return counted_new(size); }
+void* operator new(std::size_t size, std::align_val_t a) { return counted_new(size, a); }
+void* operator new[](std::size_t size, std::align_val_t a) { return counted_new(size, a); }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return std::malloc(size ? size : 1); }
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept { return std::malloc(size ? size : 1); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
+#endif
+
+namespace fieldlines {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Heap calls made by one detect(image, out).
+long allocations_in_detect(LineDetector& detector, const cv::Mat& image, std::vector<Segment>& out) {
+  g_allocations = 0;
+  g_counting = true;
+  detector.detect(image, out);
+  g_counting = false;
+  return g_allocations.load();
+}
+
+// Two warm-up passes, then every frame once more, counted; with the per-frame counts so a
+// failure names the frame.
+void expect_warm_detect_allocates_nothing(const std::vector<cv::Mat>& frames, const std::vector<std::string>& names) {
+  LineDetector detector;
+  std::vector<Segment> out;
+  // A cold detector does allocate, inside libfieldlines_detect: the counter sees the library.
+  EXPECT_GT(allocations_in_detect(detector, frames.front(), out), 0);
+  std::size_t segments = 0;
+  for (int pass = 0; pass < 2; ++pass)
+    for (const cv::Mat& f : frames) detector.detect(f, out), segments += out.size();
+  EXPECT_GT(segments, 0u) << "the frames must exercise drawing and validation";
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    EXPECT_EQ(allocations_in_detect(detector, frames[i], out), 0) << names[i] << " (" << frames[i].cols << "x"
+                                                                  << frames[i].rows << ")";
+}
+
+TEST(DetectAllocations, CounterSeesEveryKindOfAllocation) {
+  // The test would pass vacuously if the counter missed allocations.
+  g_allocations = 0;
+  g_counting = true;
+  auto* v = new std::vector<int>(100);
+  void* m = std::malloc(10);
+  void* a = nullptr;
+  EXPECT_EQ(posix_memalign(&a, 64, 128), 0);
+  g_counting = false;
+  EXPECT_GE(g_allocations.load(), 4);
+  delete v;
+  std::free(m);
+  std::free(a);
+}
+
+TEST(DetectAllocations, NoneOnSyntheticFramesOfOneSize) {
+  std::vector<cv::Mat> frames;
+  std::vector<std::string> names;
+  for (int shift = 0; shift < 6; ++shift) {
+    frames.push_back(test::synthetic_field(640, 480, shift * 7));
+    names.push_back("synthetic shift " + std::to_string(shift * 7));
+  }
+  expect_warm_detect_allocates_nothing(frames, names);
+}
+
+TEST(DetectAllocations, NoneWhenSizesAlternateAfterTheLargest) {
+  LineDetector detector;
+  std::vector<Segment> out;
+  const cv::Mat large = test::synthetic_field(1280, 720), small = test::synthetic_field(320, 240, 5),
+                middle = test::synthetic_field(800, 600, 3), tall = test::synthetic_field(480, 640, 9);
+  for (const cv::Mat* f : {&large, &small, &middle, &tall}) detector.detect(*f, out);
+  detector.detect(large, out);  // drawing buffers grow to whichever frame needs most
+  for (int round = 0; round < 3; ++round)
+    for (const cv::Mat* f : {&small, &large, &tall, &middle, &small}) {
+      EXPECT_EQ(allocations_in_detect(detector, *f, out), 0) << f->cols << "x" << f->rows << " round " << round;
+      EXPECT_FALSE(out.empty());
+    }
+}
+
+std::vector<fs::path> images_in(const fs::path& dir) {
+  std::vector<fs::path> paths;
+  for (const auto& e : fs::directory_iterator(dir)) paths.push_back(e.path());
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+void expect_none_on_folder(const fs::path& dir, std::size_t expected_frames) {
+  std::vector<cv::Mat> frames;
+  std::vector<std::string> names;
+  for (const fs::path& p : images_in(dir)) {
+    cv::Mat bgr = cv::imread(p.string(), cv::IMREAD_COLOR);
+    if (bgr.empty()) continue;
+    frames.push_back(bgr);
+    names.push_back(p.filename().string());
+  }
+  ASSERT_EQ(frames.size(), expected_frames) << dir;
+  expect_warm_detect_allocates_nothing(frames, names);
+}
+
+TEST(DetectAllocations, NoneOnTheAuthorsSslFrames) {
+  FIELDLINES_REQUIRE_SHARED("data/elsed-ssl/images", dir);
+  expect_none_on_folder(dir, 41);
+}
+
+TEST(DetectAllocations, NoneOnHumanoidFramesOfTwoSizes) {
+  FIELDLINES_REQUIRE_SHARED("data/humanoid-samples", dir);
+  expect_none_on_folder(dir, 9);  // 640x360 and 800x600, interleaved by name
+}
+
+}  // namespace
+}  // namespace fieldlines
