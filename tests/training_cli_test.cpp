@@ -219,3 +219,23 @@ TEST_F(Cli, BadFoldsFailBeforeWritingAnything) {
     EXPECT_FALSE(fs::exists(out)) << opts;
   }
 }
+
+TEST_F(Cli, AClassWithoutDataIsNotApplicableNotZero) {
+  // Only markings and clutter labelled, and thresholds that never predict a boundary.
+  std::vector<fl::ReferenceRow> rows = fl::read_reference_csv(csv("a.csv", 30));
+  std::erase_if(rows, [](const fl::ReferenceRow& r) { return r.segment.label == fl::Label::Boundary; });
+  const fs::path data = dir_ / "no_boundary.csv";
+  fl::write_reference_csv(data, rows);
+  fl::ThresholdsFile t;
+  t.thresholds.boundary.thresholds = {1000.f, 0.f, 100000.f};
+  fl::save_thresholds_file(dir_ / "t.json", t);
+  const CliRun r = run("eval " + data.string() + " --thresholds " + (dir_ / "t.json").string() + " --json " +
+                       (dir_ / "e.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json boundary = nlohmann::json::parse(fl::read_file(dir_ / "e.json"))["total"]["boundary"];
+  EXPECT_TRUE(boundary["precision"].is_null()) << boundary;
+  EXPECT_TRUE(boundary["recall"].is_null()) << boundary;
+  EXPECT_NE(r.out.find("n/a"), std::string::npos) << r.out;
+  const nlohmann::json marking = nlohmann::json::parse(fl::read_file(dir_ / "e.json"))["total"]["marking"];
+  EXPECT_TRUE(marking["precision"].is_number()) << marking;
+}

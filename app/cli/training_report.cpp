@@ -38,7 +38,9 @@ ClassOverFolds over_folds(const CrossValidation& cv, ClassCounts Counts::*member
 }  // namespace
 
 nlohmann::json class_json(const ClassCounts& c) {
-  return {{"tp", c.tp}, {"fp", c.fp}, {"fn", c.fn}, {"precision", c.precision()}, {"recall", c.recall()}, {"f1", c.f1()}};
+  const auto figure = [&](double v) { return c.empty() ? nlohmann::json(nullptr) : nlohmann::json(v); };
+  return {{"tp", c.tp}, {"fp", c.fp}, {"fn", c.fn}, {"precision", figure(c.precision())},
+          {"recall", figure(c.recall())}, {"f1", figure(c.f1())}};
 }
 
 nlohmann::json counts_json(const Counts& c) {
@@ -55,8 +57,10 @@ void print_counts(std::FILE* out, const std::string& label, const Counts& c) {
   // Long labels (paths) get their own line so the columns stay aligned.
   if (label.size() > 20) std::fprintf(out, "%s\n%-20s", label.c_str(), "");
   else std::fprintf(out, "%-20s", label.c_str());
-  for (const ClassCounts* k : {&c.marking, &c.boundary})
-    std::fprintf(out, "  %5ld %5ld %5ld %5.3f %5.3f %5.3f", k->tp, k->fp, k->fn, k->precision(), k->recall(), k->f1());
+  for (const ClassCounts* k : {&c.marking, &c.boundary}) {
+    if (k->empty()) std::fprintf(out, "  %5ld %5ld %5ld %5s %5s %5s", k->tp, k->fp, k->fn, "n/a", "n/a", "n/a");
+    else std::fprintf(out, "  %5ld %5ld %5ld %5.3f %5.3f %5.3f", k->tp, k->fp, k->fn, k->precision(), k->recall(), k->f1());
+  }
   std::fprintf(out, "\n");
 }
 

@@ -13,6 +13,9 @@ namespace fieldlines {
 
 struct ClassCounts {
   long tp = 0, fp = 0, fn = 0;
+  // No labelled and no predicted segment of the class: its figures are undefined ("n/a",
+  // JSON null), not 0. The ratios below return 0 for 0/0 only so arithmetic never sees NaN.
+  bool empty() const { return tp + fp + fn == 0; }
   double precision() const;
   double recall() const;
   double f1() const;
