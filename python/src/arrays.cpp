@@ -55,8 +55,9 @@ cv::Mat image_view(const py::array& image, const std::string& what) {
                           " (expected 1 grey, 3 BGR or 4 BGRA; shape " + shape_text(image) + ")");
   if (rows > INT_MAX || cols > INT_MAX)
     throw py::value_error(what + ": too large (shape " + shape_text(image) + ")");
-  // Pixels must be packed; the row stride may be larger (a crop), as in a cv::Mat.
-  const bool packed = (image.ndim() == 2 || image.strides(2) == item) &&
+  // Pixels must be packed; the row stride may be larger (a crop), as in a cv::Mat. An axis of
+  // length 1 may have any stride (NumPy gives image[:, :, None] a stride of 0).
+  const bool packed = (channels == 1 || image.strides(2) == item) &&
                       (cols == 1 || image.strides(1) == channels * item);
   const py::ssize_t row_step = rows == 1 ? cols * channels * item : image.strides(0);
   if (!packed || row_step < cols * channels * item || row_step % item != 0)
