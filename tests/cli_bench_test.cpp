@@ -1,4 +1,4 @@
-// `fieldlines bench` end to end: the JSON schema, all five detectors, bad inputs. Speed itself is
+// `fieldlines bench` end to end: the JSON schema, all six rows, bad inputs. Speed itself is
 // not asserted here (that is what the benchmark is for); only that the numbers are sane.
 #include <gtest/gtest.h>
 
@@ -27,11 +27,11 @@ class CliBench : public fieldlines::test::TempDirTest {};
 TEST_F(CliBench, HelpNamesTheDetectorsAndExamples) {
   const CliRun r = run_cli({"bench", "--help"}, dir_);
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* word : {"edlines", "fld", "lsd", "floor", "--repeat", "--json", "examples:"})
+  for (const char* word : {"edlines", "fld", "lsd", "gradients", "floor", "--repeat", "--json", "examples:"})
     EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
-TEST_F(CliBench, JsonListsAllFiveDetectorsWithSaneNumbers) {
+TEST_F(CliBench, JsonListsAllSixRowsWithSaneNumbers) {
   const fs::path a = write_image("a.png", synthetic_field(640, 480));
   const fs::path b = write_image("b.png", synthetic_field(640, 480, 11));
   const fs::path out = dir_ / "bench.json";
@@ -46,15 +46,16 @@ TEST_F(CliBench, JsonListsAllFiveDetectorsWithSaneNumbers) {
     EXPECT_TRUE(std::isfinite(median) && median > 0) << d;
     EXPECT_GE(p90, median) << d;
     EXPECT_GE(segments, 0) << d;
-    // The floor finds no segments; every real detector finds the painted lines.
-    if (d["name"] == "floor") EXPECT_EQ(segments, 0) << d;
+    // The floor and our gradient stage find no segments; every real detector finds the lines.
+    if (d["name"] == "floor" || d["name"] == "gradients") EXPECT_EQ(segments, 0) << d;
     else EXPECT_GT(segments, 0) << d;
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"fieldlines", "edlines", "fld", "lsd", "floor"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"fieldlines", "edlines", "fld", "lsd", "gradients", "floor"}));
   // The table shows the ratios and the target check.
   EXPECT_NE(r.out.find("ours/this"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("fieldlines/edlines = "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("fieldlines/floor = "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("gradients/floor = "), std::string::npos) << r.out;
 }
 
 TEST_F(CliBench, BadImagesAreSkippedAndReported) {

@@ -4,6 +4,7 @@
 // of awkward sizes, every kernel the parameters allow, and the authors' frames.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,20 @@ TEST(GradientPass, MatchesOpenCvForEveryKernel) {
       }
     }
   }
+}
+
+// This machine may take the AVX2 kernels; the SSE2/NEON ones (what an arm64 robot runs) must
+// give the same bits.
+TEST(GradientPass, BaselineKernelsMatchOpenCvToo) {
+  ::setenv("FIELDLINES_NO_AVX2", "1", 1);
+  for (const int k : {0, 3, 5, 7, 9, 13}) {
+    DetectorParams p;
+    p.gaussian_kernel = k;
+    LineDetector detector(p);  // reads the switch when configured
+    for (const cv::Size s : {cv::Size(3, 3), cv::Size(9, 5), cv::Size(17, 16), cv::Size(33, 20), cv::Size(641, 479)})
+      expect_same(detector, random_bgr(s.height, s.width, 11), cv::format("baseline k=%d %dx%d", k, s.width, s.height));
+  }
+  ::unsetenv("FIELDLINES_NO_AVX2");
 }
 
 TEST(GradientPass, SizesMayChangeBetweenCalls) {

@@ -60,6 +60,15 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
                    return lsd_state->lines.size();
                  }});
 
+  // Our first stage alone (the fused grey + Gaussian + Sobel + magnitude + direction pass), so
+  // the bench shows what the drawing, validation and classification add on top of it.
+  auto gradients = std::make_shared<LineDetector>(params, thresholds);
+  out.push_back({"gradients", "fieldlines gradients only: fused grey, Gaussian, Sobel x/y, |dx|+|dy|, direction",
+                 [gradients](const cv::Mat& bgr) {
+                   gradients->compute_gradients(bgr);
+                   return std::size_t{0};
+                 }});
+
   struct Floor {
     cv::Mat grey, blurred, gx, gy;
   };

@@ -14,7 +14,7 @@
 namespace fieldlines::cli {
 
 struct TimedDetector {
-  std::string name;  // "fieldlines", "edlines", "fld", "lsd", "floor"
+  std::string name;  // "fieldlines", "edlines", "fld", "lsd", "gradients", "floor"
   std::string what;  // one line for tables and --help
   // Runs on a BGR image and returns the number of segments found. Owns its buffers and reuses
   // them between calls, so repeated calls measure the steady state.
@@ -22,8 +22,9 @@ struct TimedDetector {
 };
 
 // In this order: ours (detect + classify), OpenCV's EdgeDrawing in EDLines mode (detectEdges +
-// detectLines, default parameters), FastLineDetector and LSD (default parameters), and the
-// floor every gradient-based detector pays: cvtColor + 5x5 Gaussian + Sobel x and y (16-bit).
+// detectLines, default parameters), FastLineDetector and LSD (default parameters), our gradient
+// stage alone (LineDetector::compute_gradients), and the floor every gradient-based detector
+// pays: cvtColor + 5x5 Gaussian + Sobel x and y (16-bit).
 std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params = {},
                                                 const Thresholds& thresholds = {});
 

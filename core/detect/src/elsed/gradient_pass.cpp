@@ -2,15 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include <opencv2/core/base.hpp>
 #include <opencv2/core/hal/intrin.hpp>
+
+#include "gradient_rows_avx2.hpp"
 
 namespace fieldlines::elsed {
 namespace {
 
 // Scratch rows are this much longer than the image so 8-lane loops may run past the last pixel.
-constexpr int kSlack = 16;
+constexpr int kSlack = 16;  // AVX2 rows: 16 lanes
 
 // cvtColor(BGR2GRAY) for 8 bit: 15-bit fixed point, rounded (OpenCV 4's BY15/GY15/RY15, not
 // the 14-bit R2Y/G2Y/B2Y of its YUV conversions).
@@ -20,8 +23,8 @@ inline std::uint8_t grey_of(const std::uint8_t* p) {
   return static_cast<std::uint8_t>((p[0] * kB2Y + p[1] * kG2Y + p[2] * kR2Y + (1 << (kYShift - 1))) >> kYShift);
 }
 
-void grey_row(const std::uint8_t* bgr, int w, std::uint8_t* out) {
-  int x = 0;
+void grey_row(const std::uint8_t* bgr, int w, std::uint8_t* out, bool use_avx2) {
+  int x = use_avx2 ? avx2::grey_row(bgr, w, out) : 0;
 #if CV_SIMD128
   // Pairs (b, g) and (r, 1) against (B2Y, G2Y) and (R2Y, rounding): one multiply-add each.
   const cv::v_int16x8 c_bg(kB2Y, kG2Y, kB2Y, kG2Y, kB2Y, kG2Y, kB2Y, kG2Y);
@@ -51,14 +54,19 @@ void grey_row(const std::uint8_t* bgr, int w, std::uint8_t* out) {
 
 // out[x] = sum_i k[i] * g[x + i] over a row padded by r on each side: the exact raw value of
 // OpenCV's ufixedpoint16 horizontal pass (at most 255 * 256, so 16 bits never overflow).
+// R > 0 fixes the radius at compile time (unrolled taps, kernel in registers); R = 0 reads r.
+template <int R>
 void smooth_h(const std::uint8_t* g, int w, const std::uint16_t* k, int r, std::uint16_t* out) {
+  if constexpr (R > 0) r = R;
   int x = 0;
 #if CV_SIMD128
+  cv::v_uint16x8 kv[16];  // r <= 15
+  for (int i = 0; i <= r; ++i) kv[i] = cv::v_setall_u16(k[i]);
   for (; x < w; x += 8) {  // rows carry kSlack, so the last vector may run past w
-    cv::v_uint16x8 acc = cv::v_mul_wrap(cv::v_load_expand(g + x + r), cv::v_setall_u16(k[r]));
+    cv::v_uint16x8 acc = cv::v_mul_wrap(cv::v_load_expand(g + x + r), kv[r]);
     for (int i = 0; i < r; ++i) {
       const cv::v_uint16x8 pair = cv::v_load_expand(g + x + i) + cv::v_load_expand(g + x + 2 * r - i);
-      acc = acc + cv::v_mul_wrap(pair, cv::v_setall_u16(k[i]));
+      acc = acc + cv::v_mul_wrap(pair, kv[i]);
     }
     cv::v_store(out + x, acc);
   }
@@ -74,18 +82,21 @@ void smooth_h(const std::uint8_t* g, int w, const std::uint16_t* k, int r, std::
 // rounding, without 32-bit lanes: with H = 256 hi + lo, the sum is 256 A + L for
 // A = sum k hi and L = sum k lo (each at most 65280), and (256 A + L + 2^15) >> 16 equals
 // (A + (L >> 8) + 128) >> 8, where A + (L >> 8) = floor(sum / 256) <= 65280 cannot overflow.
+template <int R>
 void smooth_v(const std::uint16_t* const* rows, int w, const std::uint16_t* k, int r, std::uint8_t* out) {
+  if constexpr (R > 0) r = R;
   int x = 0;
 #if CV_SIMD128
   const cv::v_uint16x8 low_byte = cv::v_setall_u16(0xFF), half = cv::v_setall_u16(128);
+  cv::v_uint16x8 kv[16];
+  for (int i = 0; i <= r; ++i) kv[i] = cv::v_setall_u16(k[i]);
   for (; x < w; x += 8) {
-    const cv::v_uint16x8 c = cv::v_load(rows[r] + x), kc = cv::v_setall_u16(k[r]);
-    cv::v_uint16x8 hi = cv::v_mul_wrap(cv::v_shr<8>(c), kc), lo = cv::v_mul_wrap(c & low_byte, kc);
+    const cv::v_uint16x8 c = cv::v_load(rows[r] + x);
+    cv::v_uint16x8 hi = cv::v_mul_wrap(cv::v_shr<8>(c), kv[r]), lo = cv::v_mul_wrap(c & low_byte, kv[r]);
     for (int i = 0; i < r; ++i) {
       const cv::v_uint16x8 a = cv::v_load(rows[i] + x), b = cv::v_load(rows[2 * r - i] + x);
-      const cv::v_uint16x8 ki = cv::v_setall_u16(k[i]);
-      hi = hi + cv::v_mul_wrap(cv::v_shr<8>(a) + cv::v_shr<8>(b), ki);
-      lo = lo + cv::v_mul_wrap((a & low_byte) + (b & low_byte), ki);
+      hi = hi + cv::v_mul_wrap(cv::v_shr<8>(a) + cv::v_shr<8>(b), kv[i]);
+      lo = lo + cv::v_mul_wrap((a & low_byte) + (b & low_byte), kv[i]);
     }
     cv::v_pack_store(out + x, cv::v_shr<8>(hi + cv::v_shr<8>(lo) + half));
   }
@@ -94,6 +105,31 @@ void smooth_v(const std::uint16_t* const* rows, int w, const std::uint16_t* k, i
     std::uint32_t acc = 0;
     for (int j = 0; j <= 2 * r; ++j) acc += static_cast<std::uint32_t>(k[j]) * rows[j][x];
     out[x] = static_cast<std::uint8_t>((acc + (1u << 15)) >> 16);
+  }
+}
+
+using SmoothH = void (*)(const std::uint8_t*, int, const std::uint16_t*, int, std::uint16_t*);
+using SmoothV = void (*)(const std::uint16_t* const*, int, const std::uint16_t*, int, std::uint8_t*);
+
+// The kernels the method and original ELSED use (7x7, 5x5) and their neighbours, unrolled.
+SmoothH smooth_h_for(int r, bool use_avx2) {
+  if (use_avx2) return avx2::smooth_h;
+  switch (r) {
+    case 1: return smooth_h<1>;
+    case 2: return smooth_h<2>;
+    case 3: return smooth_h<3>;
+    case 4: return smooth_h<4>;
+    default: return smooth_h<0>;
+  }
+}
+SmoothV smooth_v_for(int r, bool use_avx2) {
+  if (use_avx2) return avx2::smooth_v;
+  switch (r) {
+    case 1: return smooth_v<1>;
+    case 2: return smooth_v<2>;
+    case 3: return smooth_v<3>;
+    case 4: return smooth_v<4>;
+    default: return smooth_v<0>;
   }
 }
 
@@ -118,8 +154,9 @@ inline void sobel_px(const std::uint8_t* a, const std::uint8_t* b, const std::ui
 // Sobel 3x3 of three smoothed rows (each padded by one pixel, so a[x + 1] is pixel x) and the
 // per-pixel products. Output rows are exactly w long: the last vector overlaps the one before.
 void sobel_row(const std::uint8_t* a, const std::uint8_t* b, const std::uint8_t* c, int w, int threshold,
-               const GradientRow& o) {
-  int x = 0;
+               const GradientRow& o, bool use_avx2) {
+  int x = use_avx2 ? avx2::sobel_row(a, b, c, w, threshold, o.dx, o.dy, o.mag, reinterpret_cast<std::uint8_t*>(o.dir)) : 0;
+  if (x == w) return;
 #if CV_SIMD128
   if (w >= 8) {
     const cv::v_uint16x8 thr = cv::v_setall_u16(static_cast<std::uint16_t>(threshold)), one = cv::v_setall_u16(1);
@@ -141,6 +178,18 @@ void sobel_row(const std::uint8_t* a, const std::uint8_t* b, const std::uint8_t*
   }
 #endif
   for (; x < w; ++x) sobel_px(a, b, c, x, threshold, o);
+}
+
+// One grey row, reflected at its ends, then smoothed horizontally into `out`.
+void smooth_row_h(const cv::Mat& bgr, int source_row, std::uint8_t* g, const std::uint16_t* k, int r, SmoothH pass,
+                  bool use_avx2, std::uint16_t* out) {
+  const int w = bgr.cols;
+  grey_row(bgr.ptr<std::uint8_t>(source_row), w, g + r, use_avx2);
+  for (int i = 1; i <= r; ++i) {  // GaussianBlur's default border, BORDER_REFLECT_101
+    g[r - i] = g[r + cv::borderInterpolate(-i, w, cv::BORDER_REFLECT_101)];
+    g[r + w - 1 + i] = g[r + cv::borderInterpolate(w - 1 + i, w, cv::BORDER_REFLECT_101)];
+  }
+  pass(g, w, k, r, out);
 }
 
 }  // namespace
@@ -181,17 +230,10 @@ void GradientPass::configure(int gaussian_kernel, double gaussian_sigma, int gra
   gaussian_kernel_q8(gaussian_kernel, gaussian_sigma, kernel_);
   radius_ = static_cast<int>(kernel_.size()) / 2;
   threshold_ = gradient_threshold;
-}
+  static const bool cpu_has_avx2 = avx2::available();
+  // FIELDLINES_NO_AVX2 forces the SSE2/NEON kernels, so their bits are tested on AVX2 machines.
+  use_avx2_ = cpu_has_avx2 && std::getenv("FIELDLINES_NO_AVX2") == nullptr;
 
-void GradientPass::smooth_row_h(const cv::Mat& bgr, int source_row, std::uint16_t* out) {
-  const int w = bgr.cols, r = radius_;
-  std::uint8_t* g = grey_.data();
-  grey_row(bgr.ptr<std::uint8_t>(source_row), w, g + r);
-  for (int i = 1; i <= r; ++i) {  // GaussianBlur's default border, BORDER_REFLECT_101
-    g[r - i] = g[r + cv::borderInterpolate(-i, w, cv::BORDER_REFLECT_101)];
-    g[r + w - 1 + i] = g[r + cv::borderInterpolate(w - 1 + i, w, cv::BORDER_REFLECT_101)];
-  }
-  smooth_h(g, w, kernel_.data(), r, out);
 }
 
 void GradientPass::run(const cv::Mat& bgr, GradientMaps& maps) {
@@ -223,18 +265,21 @@ void GradientPass::run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begi
   const auto h_slot = [&](int v) { return hrows_.data() + static_cast<std::size_t>((v - first_virtual) % taps) * h_stride; };
   const auto b_slot = [&](int yb) { return brows_.data() + static_cast<std::size_t>(yb % 3) * b_stride; };
   const std::uint16_t* rows[32];
+  const SmoothH h_pass = smooth_h_for(r, use_avx2_);
+  const SmoothV v_pass = smooth_v_for(r, use_avx2_);
   const auto sobel = [&](int y) {
     const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(w);
     const GradientRow o{maps.dx.data() + at, maps.dy.data() + at, maps.mag.data() + at, maps.dir.data() + at};
-    sobel_row(b_slot(std::max(y - 1, 0)), b_slot(y), b_slot(std::min(y + 1, h - 1)), w, threshold_, o);
+    sobel_row(b_slot(std::max(y - 1, 0)), b_slot(y), b_slot(std::min(y + 1, h - 1)), w, threshold_, o, use_avx2_);
   };
 
   for (int yb = first_b; yb <= last_b; ++yb) {
     for (; virtual_row <= yb + r; ++virtual_row)
-      smooth_row_h(bgr, cv::borderInterpolate(virtual_row, h, cv::BORDER_REFLECT_101), h_slot(virtual_row));
+      smooth_row_h(bgr, cv::borderInterpolate(virtual_row, h, cv::BORDER_REFLECT_101), grey_.data(), kernel_.data(), r,
+                   h_pass, use_avx2_, h_slot(virtual_row));
     for (int t = 0; t < taps; ++t) rows[t] = h_slot(yb - r + t);
     std::uint8_t* b = b_slot(yb);
-    smooth_v(rows, w, kernel_.data(), r, b + 1);
+    v_pass(rows, w, kernel_.data(), r, b + 1);
     b[0] = b[1];  // Sobel's BORDER_REPLICATE
     b[w + 1] = b[w];
     if (yb - 1 >= row_begin && yb - 1 < row_end) sobel(yb - 1);

@@ -30,8 +30,7 @@ class GradientPass {
   void run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begin, int row_end);
 
  private:
-  void smooth_row_h(const cv::Mat& bgr, int source_row, std::uint16_t* out);
-
+  bool use_avx2_ = false;  // the CPU has AVX2: gradient_rows_avx2's kernels instead of SSE2/NEON
   int radius_ = 0;
   int threshold_ = 0;
   std::vector<std::uint16_t> kernel_{256};
