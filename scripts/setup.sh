@@ -11,6 +11,7 @@ packages=(
   libopencv-dev libopencv-contrib-dev libeigen3-dev nlohmann-json3-dev
   libimgui-dev libstb-dev libglfw3-dev libgl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  pybind11-dev python3-dev python3-numpy python3-pytest
   xvfb xauth xdotool x11-utils imagemagick
   clang libclang-rt-14-dev
 )

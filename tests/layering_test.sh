@@ -2,6 +2,7 @@
 # The include layering of the source tree (README, "Architecture"): dependencies point one way,
 #   core/detect <- core/data <- core/train <- core/synth;  gui/model -> core;
 #   gui (panels, widgets) -> gui/model;  app/cli -> core;  app/studio -> gui;
+#   python (the module) -> detect, data, train;
 # no window-system include (ImGui, GLFW, OpenGL) in core/ or gui/model/; every quoted include
 # is either a file beside the includer or qualified from the project root or fieldlines/<lib>/.
 # Usage: layering_test.sh SOURCE_DIR. Prints every violation; exits 1 if there is one.
@@ -15,7 +16,7 @@ layer_of_file() {
   case "$1" in
     core/detect/*) echo detect ;; core/data/*) echo data ;; core/train/*) echo train ;;
     core/synth/*) echo synth ;; gui/model/*) echo model ;; gui/*) echo gui ;;
-    app/cli/*) echo cli ;; app/studio/*) echo studio ;; *) echo other ;;
+    app/cli/*) echo cli ;; app/studio/*) echo studio ;; python/*) echo python ;; *) echo other ;;
   esac
 }
 layer_of_include() {
@@ -37,6 +38,7 @@ allowed() {
     gui) echo "detect data train synth model gui" ;;
     cli) echo "detect data train synth cli" ;;
     studio) echo "detect data train synth model gui studio" ;;
+    python) echo "detect data train" ;;
     other) echo "detect data train synth model gui cli studio other" ;;  # tests, bench, fuzzers
   esac
 }
