@@ -21,6 +21,8 @@ constexpr float kClickSlop = 4;  // pixels a press may move and still count as a
 
 void draw_styled_line(ImDrawList* draw, ImVec2 a, ImVec2 b, const studio::SegmentStyle& style) {
   const ImU32 col = colour(style.colour);
+  // The dark outline first, solid even under a dashed line, so the segment's extent shows.
+  draw->AddLine(a, b, colour(studio::kOutline), style.thickness + studio::kOutlineExtra);
   if (style.stroke == studio::Stroke::Solid) {
     draw->AddLine(a, b, col, style.thickness);
     return;
@@ -124,13 +126,16 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
   if (state.show_segments) {
     for (std::size_t i = 0; i < segments.size(); ++i) {
       const auto s = studio::to_screen(segments[i], state.view);
-      draw_styled_line(draw, im(s.a), im(s.b), studio::style_for(state.mode, segments[i].label, predictions[i]));
+      auto style = studio::style_for(state.mode, segments[i].label, predictions[i]);
+      style.thickness = studio::zoomed_thickness(style.thickness, state.view.scale());
+      draw_styled_line(draw, im(s.a), im(s.b), style);
     }
   }
   if (const auto h = controller.hovered()) {
     // Highlight: a white halo under a redraw of the segment, thicker.
     const auto s = studio::to_screen(segments[*h], state.view);
     auto style = studio::style_for(state.mode, segments[*h].label, predictions[*h]);
+    style.thickness = studio::zoomed_thickness(style.thickness, state.view.scale());
     draw->AddLine(im(s.a), im(s.b), IM_COL32(255, 255, 255, 230), style.thickness + 5);
     style.thickness += 2;
     style.stroke = studio::Stroke::Solid;

@@ -1,6 +1,8 @@
 #include "gui/model/overlay_style.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace fieldlines::studio {
 
@@ -8,14 +10,14 @@ namespace {
 constexpr Rgba kMarking{255, 40, 200, 255};    // magenta
 constexpr Rgba kBoundary{30, 120, 255, 255};   // blue
 constexpr Rgba kNone{255, 210, 0, 255};        // yellow
-constexpr Rgba kUnlabelled{0, 230, 230, 255};   // cyan: still to do, must stand out
+constexpr Rgba kUnlabelled{255, 70, 20, 255};  // vermilion: still to do, must stand out on turf
 constexpr Rgba kNegative{150, 150, 150, 160};  // translucent grey: agreed "not a feature"
 
 constexpr std::array kLabelLegend{
     LegendEntry{"marking", {kMarking, Stroke::Solid, 2}},
     LegendEntry{"boundary", {kBoundary, Stroke::Solid, 2}},
     LegendEntry{"none", {kNone, Stroke::Solid, 2}},
-    LegendEntry{"unlabelled", {kUnlabelled, Stroke::Solid, 1}},
+    LegendEntry{"unlabelled", {kUnlabelled, Stroke::Solid, 2}},
 };
 constexpr std::array kPredictionLegend{
     LegendEntry{"predicted marking", {kMarking, Stroke::Solid, 2}},
@@ -27,7 +29,7 @@ constexpr std::array kAgreementLegend{
     LegendEntry{"false positive (predicted class)", {kMarking, Stroke::Dashed, 2}},
     LegendEntry{"false negative (labelled class)", {kMarking, Stroke::Dotted, 2}},
     LegendEntry{"true negative", {kNegative, Stroke::Solid, 1}},
-    LegendEntry{"unlabelled", {kUnlabelled, Stroke::Dotted, 1}},
+    LegendEntry{"unlabelled", {kUnlabelled, Stroke::Dotted, 2}},
 };
 }  // namespace
 
@@ -53,11 +55,11 @@ Rgba label_colour(Label label) {
 SegmentStyle style_for(OverlayMode mode, Label truth, Label predicted) {
   switch (mode) {
     case OverlayMode::Labels:
-      return {label_colour(truth), Stroke::Solid, truth == Label::Unlabelled ? 1.5f : 2.0f};
+      return {label_colour(truth), Stroke::Solid, 2.0f};
     case OverlayMode::Prediction:
       return {label_colour(predicted), Stroke::Solid, predicted == Label::None ? 1.0f : 2.0f};
     case OverlayMode::Agreement:
-      if (truth == Label::Unlabelled) return {kUnlabelled, Stroke::Dotted, 1};
+      if (truth == Label::Unlabelled) return {kUnlabelled, Stroke::Dotted, 2};
       if (truth == predicted) {
         return truth == Label::None ? SegmentStyle{kNegative, Stroke::Solid, 1} : SegmentStyle{label_colour(truth), Stroke::Solid, 2};
       }
@@ -67,6 +69,10 @@ SegmentStyle style_for(OverlayMode mode, Label truth, Label predicted) {
       return {label_colour(truth), Stroke::Dotted, 2};
   }
   return {};
+}
+
+float zoomed_thickness(float thickness, float scale) {
+  return thickness * std::clamp(std::sqrt(scale), 1.0f, 4.0f);
 }
 
 std::span<const LegendEntry> legend(OverlayMode mode) {

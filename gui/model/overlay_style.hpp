@@ -28,8 +28,19 @@ struct SegmentStyle {
   float thickness = 2;  // screen pixels
 };
 
-// Saturated colours that are neither green nor white, so they stand out on a field picture.
+// Saturated colours that are neither green nor white, so they stand out on a field picture:
+// each is at least 100 CIE76 Delta-E from every turf green of tests/studio/overlay_style_test
+// and from white, except yellow ("none", >= 55: an agreed non-feature need not shout).
 Rgba label_colour(Label label);
+
+// Drawn under every segment, a little wider: the colour then reads against bright turf, white
+// paint and dark walls alike.
+inline constexpr Rgba kOutline{10, 10, 10, 255};
+inline constexpr float kOutlineExtra = 3;  // outline width = line width + this, screen pixels
+
+// A style's width at a view scale (screen pixels per image pixel): grows with the zoom (as the
+// square root, so a 16x zoom draws 4x wider), never thinner than at 1:1.
+float zoomed_thickness(float thickness, float scale);
 
 // What a segment looks like given its human label and the thresholds' prediction.
 SegmentStyle style_for(OverlayMode mode, Label truth, Label predicted);

@@ -20,6 +20,28 @@ cv::Mat field_image(int width, int height, const std::vector<fieldlines::Segment
   return image;
 }
 
+namespace {
+std::array<double, 3> lab(std::array<int, 3> rgb) {
+  const auto linear = [](int c) {
+    const double v = c / 255.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  };
+  const double r = linear(rgb[0]), g = linear(rgb[1]), b = linear(rgb[2]);
+  const double x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
+  const double y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+  const double z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
+  const auto f = [](double t) { return t > 216.0 / 24389 ? std::cbrt(t) : (24389.0 / 27 * t + 16) / 116; };
+  return {116 * f(y) - 16, 500 * (f(x) - f(y)), 200 * (f(y) - f(z))};
+}
+}  // namespace
+
+double delta_e76(std::array<int, 3> a, std::array<int, 3> b) {
+  const auto p = lab(a), q = lab(b);
+  return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+}
+
+double lightness(std::array<int, 3> rgb) { return lab(rgb)[0]; }
+
 std::vector<fieldlines::Segment> grid_segments(int width, int height, int count) {
   std::vector<fieldlines::Segment> out;
   const int cols = std::max(1, static_cast<int>(std::ceil(std::sqrt(count * 1.0 * width / height / 4))));

@@ -1,5 +1,6 @@
 #pragma once
 // Test fixtures for the studio: synthetic field pictures with known segments, saved as a project.
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -13,6 +14,11 @@ namespace studio_test {
 
 // Green carpet with the given segments drawn as 5 px white lines (BGR, 8-bit).
 cv::Mat field_image(int width, int height, const std::vector<fieldlines::Segment>& lines);
+
+// CIE76 colour difference (Delta-E in L*a*b*, sRGB D65) and lightness L*: how far apart two
+// colours look. ~2 is just noticeable; > 50 reads as a different colour at a glance.
+double delta_e76(std::array<int, 3> rgb_a, std::array<int, 3> rgb_b);
+double lightness(std::array<int, 3> rgb);
 
 // `count` horizontal segments in a grid over a width x height image, with gradients that the
 // default thresholds classify: even indices as markings (white-green), odd as boundaries

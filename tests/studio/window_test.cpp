@@ -145,6 +145,24 @@ TEST_F(StudioWindow, LabelByMouseAndKeysUndoRedoAndSurviveSigkill) {
   EXPECT_GT(colour_hits(shot, on_screen(3), label_colour(Label::None)), 40);
   EXPECT_GT(colour_hits(shot, on_screen(7), label_colour(Label::Unlabelled)), 20);
   EXPECT_EQ(colour_hits(shot, on_screen(7), label_colour(Label::Marking)), 0);
+  // Unlabelled segments stand out on the turf and on the white line under them: across each,
+  // the pixel that looks most unlike the turf is >= 90 Delta-E from it and from white (cyan,
+  // the colour of earlier versions, reached 65 and 49), with the dark outline beside it.
+  for (const std::size_t i : {7u, 10u, 11u}) {
+    const auto [mx, my] = on_screen(i);
+    const std::array<int, 3> turf{field[2], field[1], field[0]};
+    double best = 0, best_vs_white = 0, darkest = 100;
+    for (int dy = -6; dy <= 6; ++dy) {
+      const cv::Vec3b p = shot.at<cv::Vec3b>(my + dy, mx);
+      const std::array<int, 3> px{p[2], p[1], p[0]};
+      const double d = studio_test::delta_e76(px, turf);
+      if (d > best) best = d, best_vs_white = studio_test::delta_e76(px, {255, 255, 255});
+      darkest = std::min(darkest, studio_test::lightness(px));
+    }
+    EXPECT_GE(best, 90.0) << "segment " << i;
+    EXPECT_GE(best_vs_white, 90.0) << "segment " << i;
+    EXPECT_LT(darkest, 20.0) << "segment " << i << ": no dark outline";
+  }
 
   // Next image with the arrow key, label there, then SIGKILL right after the save.
   ASSERT_EQ(run(x("key Right")), 0);
