@@ -1,0 +1,88 @@
+#include "fieldlines/train/review.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "fieldlines/train/calibrate.hpp"
+
+namespace fieldlines {
+namespace {
+
+constexpr double kProjectionUnit = 10, kAngleUnit = 2, kLengthUnit = 50;
+
+// Signed distance of one class test to its boundary: >= 0 inside (the smallest slack), < 0
+// outside (minus the distance to the nearest point inside: all violations must be undone).
+double test_margin(const ClassFeatures& f, float length, const ClassThresholds& t) {
+  const double slack[3] = {(f.projection - t.min_projection) / kProjectionUnit,
+                           (t.max_angle_deg - f.angle_deg) / kAngleUnit, (length - t.min_length) / kLengthUnit};
+  double inside = std::numeric_limits<double>::infinity(), outside = 0;
+  for (const double s : slack) {
+    inside = std::min(inside, s);
+    if (s < 0) outside += s * s;
+  }
+  return inside >= 0 ? inside : -std::sqrt(outside);
+}
+
+std::size_t count(std::span<const Segment> s, Label l) {
+  return static_cast<std::size_t>(std::count_if(s.begin(), s.end(), [&](const Segment& x) { return x.label == l; }));
+}
+
+}  // namespace
+
+std::string_view to_string(ProposalSource source) {
+  switch (source) {
+    case ProposalSource::LabelFree: return "label-free";
+    case ProposalSource::Trained: return "trained";
+    case ProposalSource::Start: break;
+  }
+  return "start";
+}
+
+ProposalThresholds proposal_thresholds(std::span<const Segment> all, std::span<const Segment> labelled,
+                                       const Thresholds& start, const ProposalParams& params, std::stop_token stop) {
+  ProposalThresholds out;
+  out.thresholds = start;
+  const Calibration fit = calibrate(all, start);
+  const std::size_t labels = labelled.size();
+  for (const TrainClass cls : {TrainClass::Boundary, TrainClass::Marking}) {
+    const bool boundary = cls == TrainClass::Boundary;
+    const std::size_t positives = count(labelled, boundary ? Label::Boundary : Label::Marking);
+    ProposalSource& source = boundary ? out.boundary : out.marking;
+    ClassThresholds& target = boundary ? out.thresholds.boundary.thresholds : out.thresholds.marking.thresholds;
+    if (positives >= params.min_labels_to_train && labels - positives >= params.min_labels_to_train) {
+      TrainParams p = params.train;
+      p.target = cls;
+      const TrainResult r = train(labelled, out.thresholds, p, {}, stop);
+      if (!r.cancelled) {
+        target = boundary ? r.thresholds.boundary.thresholds : r.thresholds.marking.thresholds;
+        source = ProposalSource::Trained;
+        continue;
+      }
+    }
+    const ClassCalibration& c = boundary ? fit.boundary : fit.marking;
+    if (c.thresholds) {
+      target = *c.thresholds;
+      source = ProposalSource::LabelFree;
+    } else {
+      if (!out.note.empty()) out.note += "; ";
+      out.note += std::string(boundary ? "boundary" : "marking") + ": " + c.refused;
+    }
+  }
+  return out;
+}
+
+double decision_margin(const SegmentFeatures& f, const Thresholds& t) {
+  const Label predicted = classify(f, t);
+  const double b = test_margin(f.boundary, f.length, t.boundary.thresholds);
+  double m = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < f.marking_count; ++i) m = std::max(m, test_margin(f.marking[i], f.length, t.marking.thresholds));
+  // The boundary test comes first: a marking prediction also needs the boundary to fail.
+  switch (predicted) {
+    case Label::Boundary: return b;
+    case Label::Marking: return std::min(m, -b);
+    default: return std::min(-b, -m);
+  }
+}
+
+}  // namespace fieldlines

@@ -1,0 +1,67 @@
+// The review loop's core (fieldlines/train/review.hpp): where proposals come from, and the
+// decision margin that orders segments uncertain-first.
+#include <gtest/gtest.h>
+
+#include "fieldlines/detect/classifier.hpp"
+#include "fieldlines/train/calibrate.hpp"
+#include "fieldlines/train/review.hpp"
+#include "known_features.hpp"
+
+namespace fl = fieldlines;
+
+namespace {
+
+std::vector<fl::Segment> unlabelled(std::vector<fl::Segment> s) {
+  for (fl::Segment& x : s) x.label = fl::Label::Unlabelled;
+  return s;
+}
+
+TEST(Review, ProposalsComeFromCalibrationUntilAClassHasEnoughLabels) {
+  const fl::test::KnownField k = fl::test::known_field(4);
+  const std::vector<fl::Segment> all = unlabelled(k.segments);
+  // No label at all: both classes label-free, equal to calibrating directly.
+  const fl::ProposalThresholds none = fl::proposal_thresholds(all, {}, fl::Thresholds{});
+  EXPECT_EQ(none.marking, fl::ProposalSource::LabelFree);
+  EXPECT_EQ(none.boundary, fl::ProposalSource::LabelFree);
+  EXPECT_EQ(none.thresholds, fl::calibrated_thresholds(fl::calibrate(all)));
+  // 30 markings and 30 non-features labelled (no boundary): markings trained, boundary label-free.
+  std::vector<fl::Segment> labelled(k.segments.begin(), k.segments.begin() + 30);
+  labelled.insert(labelled.end(), k.segments.end() - 30, k.segments.end());
+  const fl::ProposalThresholds some = fl::proposal_thresholds(all, labelled, fl::Thresholds{});
+  EXPECT_EQ(some.marking, fl::ProposalSource::Trained);
+  EXPECT_EQ(some.boundary, fl::ProposalSource::LabelFree);
+  EXPECT_EQ(some.thresholds.boundary, none.thresholds.boundary);
+  // The trained markings classify the labelled ones right.
+  int right = 0;
+  for (const fl::Segment& s : labelled) right += fl::classify(s, some.thresholds) == s.label;
+  EXPECT_GE(right, 58);
+  // Grey edges only: nothing to calibrate; the start thresholds stay, with the reasons.
+  const std::vector<fl::Segment> grey(all.begin() + k.markings + k.boundaries, all.end());
+  const fl::ProposalThresholds lost = fl::proposal_thresholds(grey, {}, fl::Thresholds{});
+  EXPECT_EQ(lost.marking, fl::ProposalSource::Start);
+  EXPECT_EQ(lost.thresholds, fl::Thresholds{});
+  EXPECT_NE(lost.note.find("marking"), std::string::npos) << lost.note;
+}
+
+TEST(Review, TheMarginIsZeroOnABoundaryAndGrowsAwayFromIt) {
+  fl::Thresholds t;
+  t.boundary.thresholds = {1000.f, 0.f, 100000.f};  // never a boundary: only the marking test matters
+  t.marking.thresholds = {20.f, 30.f, 100.f};
+  const auto features = [&](double angle, float length) {
+    return fl::compute_features(fl::test::segment_with(fl::test::marking_gradient(100, angle), length, fl::Label::None), t);
+  };
+  const double inside = fl::decision_margin(features(20, 300), t);
+  const double near = fl::decision_margin(features(29, 300), t);
+  const double edge_length = fl::decision_margin(features(20, 100), t);
+  const double outside = fl::decision_margin(features(40, 300), t);
+  EXPECT_EQ(fl::classify(features(20, 300), t), fl::Label::Marking);
+  EXPECT_EQ(fl::classify(features(40, 300), t), fl::Label::None);
+  EXPECT_GT(inside, near);
+  EXPECT_GT(near, 0);
+  EXPECT_NEAR(near, 0.5, 0.01);         // 1 degree inside the 30-degree cut, 2 degrees per unit
+  EXPECT_NEAR(edge_length, 0.0, 1e-6);  // exactly at min length
+  EXPECT_NEAR(outside, 5.0, 0.01);      // 10 degrees outside
+  EXPECT_GT(outside, near);
+}
+
+}  // namespace
