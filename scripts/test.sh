@@ -14,6 +14,7 @@ for stage in $stages; do
       cmake --build --preset asan -j"$(nproc)"
       ctest --preset asan --output-on-failure ;;
     fuzz) bash scripts/fuzz.sh ;;
+    arm64) bash scripts/arm64.sh ;;
     *) echo "unknown test stage '$stage'" >&2; exit 2 ;;
   esac
 done
