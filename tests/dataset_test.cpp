@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/data/data_file.hpp"
 #include "fieldlines/data/project.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/data/label_commands.hpp"
@@ -233,4 +234,37 @@ TEST_F(ProjectFiles, ReferenceRowsFromProjectAreTheLabelledSegmentsAndReadBackEx
   fl::write_reference_csv(dir_ / "again.csv", again);
   EXPECT_EQ(fl::read_file(dir_ / "again.csv"), fl::read_file(csv));
   EXPECT_TRUE(fl::reference_rows_from_project(fl::Project{}).empty());
+}
+
+// A DATA file is a project or a reference CSV, told apart by name or header, and loads as the
+// same Project either way: a CSV (even one interleaving images) as the project convert makes.
+TEST_F(ProjectFiles, DataFilesLoadAsProjectsWhateverTheirFormat) {
+  const fl::Project p = sample();
+  const std::vector<fl::ReferenceRow> rows = fl::reference_rows_from_project(p);
+  const std::vector<fl::ReferenceRow> interleaved = {rows[0], rows[1],
+                                                     {"frames/a.png", seg(1, 2, 30, 4, fl::Label::Boundary)}};
+  fl::write_reference_csv(dir_ / "rows.CSV", interleaved);
+  fs::copy_file(dir_ / "rows.CSV", dir_ / "rows.txt");  // no .csv name: told by its header
+  p.save(dir_ / "p.json");
+  EXPECT_TRUE(fl::is_reference_csv_data(dir_ / "rows.CSV"));
+  EXPECT_TRUE(fl::is_reference_csv_data(dir_ / "rows.txt"));
+  EXPECT_FALSE(fl::is_reference_csv_data(dir_ / "p.json"));
+
+  const fl::Project from_csv = fl::load_data_as_project(dir_ / "rows.txt");
+  const fl::Project converted = fl::project_from_reference_rows(fl::read_reference_csv(dir_ / "rows.CSV"));
+  ASSERT_EQ(from_csv.images.size(), 2u);
+  EXPECT_EQ(from_csv.images[0].segments.size(), 2u);  // grouped by image
+  const fl::LabelledSet a = from_csv.labelled(), b = converted.labelled();
+  ASSERT_EQ(a.size(), 3u);
+  ASSERT_EQ(b.size(), 3u);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    EXPECT_TRUE(a.segments[i].x0 == b.segments[i].x0 && a.segments[i].label == b.segments[i].label) << i;
+  EXPECT_EQ(a.image_of, (std::vector<std::uint32_t>{0, 0, 1}));
+  EXPECT_EQ(a.segments[1].label, fl::Label::Boundary);
+  EXPECT_EQ(from_csv.thresholds, fl::Thresholds{});
+
+  const fl::Project from_json = fl::load_data_as_project(dir_ / "p.json");
+  EXPECT_EQ(from_json.labelled_count(), p.labelled_count());
+  EXPECT_EQ(from_json.thresholds, p.thresholds);
+  EXPECT_EQ(error_of([&] { fl::load_data_as_project(dir_); }), "'" + dir_.string() + "' is not a file");
 }

@@ -6,10 +6,10 @@
 
 #include "app/cli/args.hpp"
 #include "app/cli/commands.hpp"
+#include "fieldlines/data/data_file.hpp"
 #include "fieldlines/data/project.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/data/reference_csv.hpp"
-#include "app/cli/labelled_data.hpp"
 #include "app/cli/output_file.hpp"
 
 namespace fieldlines::cli {

@@ -70,7 +70,7 @@ int cmd_eval(const Args& args) {
   print_counts_header(stdout, 20);
   for (const std::string& path : a.positionals()) {
     const LoadedData d = load_labelled_data(path);
-    const Evaluation ev = evaluate(d.set, file.thresholds);
+    const Evaluation ev = evaluate(d.project.labelled(), file.thresholds);
     nlohmann::json images = nlohmann::json::array();
     for (const ImageCounts& ic : ev.per_image) {
       if (a.flag("--per-image")) print_counts(stdout, "  " + ic.image, ic.counts);

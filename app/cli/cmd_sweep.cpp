@@ -71,19 +71,21 @@ examples:
     throw Error("--split: expected image or row, got '" + *v + "'");
 
   std::vector<LoadedData> data;
+  std::vector<LabelledSet> sets;  // per file, its labelled view
   for (const std::string& p : a.positionals()) {
     data.push_back(load_labelled_data(p));
-    if (data.back().set.size() == 0) throw Error(p + ": holds no labelled segments to split");
+    sets.push_back(data.back().project.labelled());
+    if (sets.back().size() == 0) throw Error(p + ": holds no labelled segments to split");
   }
   std::vector<std::vector<SweepCell>> results;
   {
     Progress progress("sweep", data.size() * sp.fractions.size() * static_cast<std::size_t>(sp.seeds), stderr,
                       {a.flag("--quiet") ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
-    for (const LoadedData& d : data) {
+    for (std::size_t i = 0; i < data.size(); ++i) {
       SweepParams p = sp;
-      p.start = d.thresholds.value_or(Thresholds{});
+      p.start = data[i].project.thresholds;
       p.train = apply_training_options(a, p.start).train;
-      results.push_back(run_sweep(d.set, p, [&](int, int) { progress.advance(); }));
+      results.push_back(run_sweep(sets[i], p, [&](int, int) { progress.advance(); }));
     }
   }
 

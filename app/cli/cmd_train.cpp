@@ -116,8 +116,8 @@ int cmd_train(const Args& args) {
   const LabelledSet all = merge(data);
   if (all.size() == 0) throw Error("the DATA files hold no labelled segments");
 
-  Thresholds start = data[0].thresholds.value_or(Thresholds{});
-  const DetectorParams detector = data[0].detector.value_or(DetectorParams{});
+  Thresholds start = data[0].project.thresholds;
+  const DetectorParams detector = data[0].project.detector;
   ProtocolSpec spec = apply_training_options(a, start);
   if (const auto v = a.value("--split"); v && !parse_split_mode(*v, spec.split))
     throw Error("--split: expected image or row, got '" + *v + "'");

@@ -1,6 +1,8 @@
 #pragma once
-// The flat view of labelled data that training, evaluation and splits work on: every segment
-// with a human label (Unlabelled ones are dropped) and the image it came from.
+// The flat labelled view of a Project (Project::labelled()) that training, evaluation and splits
+// work on: every segment with a human label (Unlabelled ones are dropped) and the image it came
+// from, in project order. A view, not a document: the Project (fieldlines/data/project.hpp,
+// loaded from either DATA format by data_file.hpp) is what is saved and edited.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -27,6 +29,8 @@ struct LabelledSet {
   std::size_t count(Label label) const;
 };
 
+// The labelled rows in file order. For rows whose images are contiguous (every file we write,
+// and the reference's own) this equals project_from_reference_rows(rows).labelled().
 LabelledSet labelled_set_from_rows(std::span<const ReferenceRow> rows);
 
 }  // namespace fieldlines

@@ -60,7 +60,8 @@ class Project {
   // Atomic. Refuses (throws) to replace an existing file it cannot read as a project.
   void save(const std::filesystem::path& file) const;
 
-  // All labelled segments, named by image path.
+  // The flat labelled view training and evaluation use: all labelled segments, image by image,
+  // named by image path.
   LabelledSet labelled() const;
   std::size_t labelled_count() const;
   // Replaces an image's segments with a fresh detection, re-attaching its labels.
