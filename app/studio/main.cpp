@@ -122,7 +122,7 @@ std::filesystem::path frames_of_video(GLFWwindow* window, const std::filesystem:
   if (std::filesystem::exists(folder)) return folder;
   studio::VideoFramesJob job;
   job.start(video, folder, {every});
-  while (!job.finished()) {
+  for (job.poll(); !job.finished(); job.poll()) {
     if (glfwWindowShouldClose(window)) {
       job.cancel();
       job.wait();
@@ -150,11 +150,10 @@ std::filesystem::path frames_of_video(GLFWwindow* window, const std::filesystem:
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glfwSwapBuffers(window);
   }
-  job.wait();
-  if (!job.error().empty()) {
+  if (!job.outcome()->ok()) {
     std::error_code ec;
     std::filesystem::remove_all(folder, ec);  // a half-written folder must not be reused
-    throw Error(job.error());
+    throw Error(job.outcome()->error());
   }
   return folder;
 }

@@ -1,14 +1,15 @@
 #pragma once
-// Detects segments in many images on a worker thread (one LineDetector, reused), reporting each
-// image as it finishes; the UI thread polls once per frame and shows the progress.
-#include <atomic>
+// Detects segments in many images as a background Job (gui/model/job.hpp), one LineDetector
+// reused: each image's result is a progress message as it finishes; the job fails as a whole
+// only when it cannot start (bad detector parameters).
+#include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "fieldlines/detect/detector.hpp"
-#include "gui/model/message_queue.hpp"
+#include "gui/model/job.hpp"
 
 namespace fieldlines::studio {
 
@@ -16,39 +17,32 @@ struct DetectionResult {
   std::size_t image = 0;          // the caller's index
   std::vector<Segment> segments;  // labels as predicted by the detector's thresholds
   double detect_ms = 0;           // detector time only (not file loading)
-  std::string error;              // non-empty when the image could not be loaded or detected
+  std::string error;              // non-empty when this image could not be loaded or detected
 };
 
 class DetectionJob {
  public:
-  DetectionJob() = default;
-  ~DetectionJob();
-  DetectionJob(const DetectionJob&) = delete;
-  DetectionJob& operator=(const DetectionJob&) = delete;
-
   struct Item {
     std::size_t image;
     std::filesystem::path path;
   };
   // Starts on a worker thread; a running job is cancelled and joined first.
   void start(std::vector<Item> items, const DetectorParams& params, const Thresholds& thresholds);
-  void cancel();
-  bool running() const { return running_; }
+  void cancel() { job_.cancel(); }
+  bool running() const { return job_.running(); }
   // Results finished since the last poll (UI thread, once per frame).
   std::vector<DetectionResult> poll();
-  void wait();  // blocks until done (tests, shutdown); results stay queued for poll()
+  void wait() { job_.wait(); }  // blocks until done (tests, shutdown); results stay queued for poll()
+  // The images processed (fewer than total() when cancelled), or why detection could not start.
+  const std::optional<Outcome<std::size_t>>& outcome() const { return job_.outcome(); }
 
   std::size_t total() const { return total_; }
-  std::size_t done() const { return done_.load(); }
-  float progress() const { return total_ ? static_cast<float>(done()) / static_cast<float>(total_) : 1.0f; }
+  std::size_t done() const { return done_; }  // results polled so far
+  float progress() const { return total_ ? static_cast<float>(done_) / static_cast<float>(total_) : 1.0f; }
 
  private:
-  MessageQueue<DetectionResult> queue_;
-  std::jthread worker_;
-  std::atomic<std::size_t> done_{0};
-  std::atomic<bool> finished_{false};
-  std::size_t total_ = 0;
-  bool running_ = false;
+  std::size_t total_ = 0, done_ = 0;
+  Job<DetectionResult, std::size_t> job_;
 };
 
 }  // namespace fieldlines::studio

@@ -357,6 +357,7 @@ void StudioController::autosave() {
 // ---------------------------------------------------------------- background jobs
 
 std::string DetectionReport::summary() const {
+  if (!error.empty()) return "detection could not start: " + error;
   if (detected == 0 && failed.empty()) return {};
   std::string out = "detected " + std::to_string(detected) + " image" + (detected == 1 ? "" : "s");
   if (labels_kept + labels_lost > 0) {
@@ -411,8 +412,8 @@ double StudioController::mean_detect_ms() const {
 
 bool StudioController::apply_training_result() {
   const auto& outcome = training_.outcome();
-  if (!outcome || !outcome->error.empty()) return false;
-  set_thresholds(outcome->result.thresholds);
+  if (!outcome || !outcome->ok()) return false;
+  set_thresholds(outcome->value().run.thresholds);
   flush();  // a deliberate act, not a drag: on disk at once
   return true;
 }
@@ -428,10 +429,6 @@ void StudioController::poll(double now_s) {
   }
   bool changed = false;
   for (DetectionResult& r : detection_.poll()) {
-    if (r.image >= image_count()) {  // the job could not start (bad detector parameters)
-      if (!r.error.empty()) detection_report_.failed.emplace_back(r.image, r.error);
-      continue;
-    }
     detection_errors_.resize(image_count());
     detection_errors_[r.image] = r.error;
     if (!r.error.empty()) {
@@ -448,6 +445,7 @@ void StudioController::poll(double now_s) {
     rebuild_features(r.image);
     changed = true;
   }
+  if (const auto& outcome = detection_.outcome(); outcome && !outcome->ok()) detection_report_.error = outcome->error();
   if (changed) {
     history_.clear();  // edits may refer to segments that no longer exist
     if (hovered_ && *hovered_ >= segments().size()) hovered_.reset();

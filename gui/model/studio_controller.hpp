@@ -28,12 +28,13 @@ struct ControllerOptions {
 };
 
 // What the background detections since the last detect_all() did: how many images, the labels
-// re-attached to the new segments by geometry and those that could not be, and the images that
-// failed (unreadable or corrupt), each with its reason.
+// re-attached to the new segments by geometry and those that could not be, the images that
+// failed (unreadable or corrupt), each with its reason, and why the whole job could not run.
 struct DetectionReport {
   std::size_t detected = 0;
   std::size_t labels_kept = 0, labels_lost = 0;
   std::vector<std::pair<std::size_t, std::string>> failed;  // image index, reason
+  std::string error;  // the job could not start (e.g. bad detector parameters)
   std::string summary() const;  // one line for the status bar; empty before any detection
 };
 

@@ -1,13 +1,12 @@
 #pragma once
-// Threshold training (PSO + polish) on a worker thread. The worker only pushes messages; the UI
-// thread calls poll() once per frame to take them, so the UI stays at full frame rate.
+// Threshold training (PSO + polish) as a background Job (gui/model/job.hpp): one snapshot per
+// iteration, then the trained thresholds with their counts on both splits, or the error.
+#include <cstddef>
 #include <optional>
-#include <string>
-#include <thread>
 #include <vector>
 
 #include "fieldlines/train/training.hpp"
-#include "gui/model/message_queue.hpp"
+#include "gui/model/job.hpp"
 
 namespace fieldlines::studio {
 
@@ -20,46 +19,37 @@ struct TrainingSnapshot {
   double eta_s = 0;                   // from the mean time per iteration so far
 };
 
-struct TrainingOutcome {
-  TrainResult result;
-  Counts train_counts, test_counts;  // of result.thresholds on each split
-  std::string error;                 // non-empty when training threw (e.g. nothing labelled)
+struct TrainingResult {
+  TrainResult run;                   // run.cancelled when stopped early (the best so far)
+  Counts train_counts, test_counts;  // of run.thresholds on each split
 };
 
 class TrainingJob {
  public:
-  TrainingJob() = default;
-  ~TrainingJob();  // requests a stop and joins: no worker outlives its job
-  TrainingJob(const TrainingJob&) = delete;
-  TrainingJob& operator=(const TrainingJob&) = delete;
-
   // Starts training on copies of the data; a running job is cancelled and joined first.
   void start(std::vector<Segment> train, std::vector<Segment> test, const Thresholds& start,
              const TrainParams& params);
-  // Asks the worker to stop after the current iteration; poll() then reports a cancelled outcome.
-  void cancel();
-  // True from start() until poll() has taken the outcome.
-  bool running() const { return running_; }
-  // Takes the queued messages (UI thread, once per frame). Returns how many were taken.
+  // Asks the worker to stop after the current iteration; the outcome is then the best so far.
+  void cancel() { job_.cancel(); }
+  bool running() const { return job_.running(); }
+  // Takes the queued snapshots and the outcome (UI thread, once per frame). Returns how many
+  // snapshots were taken.
   std::size_t poll();
   // Blocks until the worker has finished and everything is polled (tests and shutdown).
-  void wait();
+  void wait() {
+    job_.wait();
+    poll();
+  }
 
   const std::vector<double>& best_scores() const { return best_scores_; }  // one per iteration
   const std::optional<TrainingSnapshot>& latest() const { return latest_; }
-  const std::optional<TrainingOutcome>& outcome() const { return outcome_; }
+  // Failed when training threw (e.g. nothing labelled).
+  const std::optional<Outcome<TrainingResult>>& outcome() const { return job_.outcome(); }
 
  private:
-  struct Message {
-    std::optional<TrainingSnapshot> snapshot;
-    std::optional<TrainingOutcome> outcome;
-  };
-  MessageQueue<Message> queue_;
-  std::jthread worker_;
-  bool running_ = false;
   std::vector<double> best_scores_;
   std::optional<TrainingSnapshot> latest_;
-  std::optional<TrainingOutcome> outcome_;
+  Job<TrainingSnapshot, TrainingResult> job_;
 };
 
 }  // namespace fieldlines::studio

@@ -27,58 +27,44 @@ std::filesystem::path frames_folder_for(const std::filesystem::path& video, int 
   return video.parent_path() / (video.stem().string() + "-every" + std::to_string(every));
 }
 
-VideoFramesJob::~VideoFramesJob() {
-  if (worker_.joinable()) {
-    worker_.request_stop();
-    worker_.join();
-  }
-}
-
 void VideoFramesJob::start(const std::filesystem::path& video, const std::filesystem::path& folder,
                            const VideoFramesParams& params) {
-  if (worker_.joinable()) {
-    worker_.request_stop();
-    worker_.join();
-  }
-  finished_ = false;
-  progress_ = 0;
-  written_ = 0;
-  error_.clear();
-  worker_ = std::jthread([this, video, folder, params](std::stop_token stop) {
-    try {
-      if (params.every < 1) throw Error("video: every-n-th frame must be >= 1");
-      cv::VideoCapture capture;
-      if (!open_video_file(capture, video.string())) throw Error(video.string() + ": cannot open as a video");
-      std::error_code ec;
-      std::filesystem::create_directories(folder, ec);
-      if (ec) throw Error(folder.string() + ": cannot create the frames folder (" + ec.message() + ")");
-      const double total = capture.get(cv::CAP_PROP_FRAME_COUNT);
-      cv::Mat frame;
-      for (long index = 0; !stop.stop_requested() && capture.read(frame); ++index) {
-        if (index % params.every == 0) {
-          char name[32];
-          std::snprintf(name, sizeof name, "frame_%06ld.png", index);
-          const auto path = folder / name;
-          if (!cv::imwrite(path.string(), frame)) throw Error(path.string() + ": cannot write the frame");
-          ++written_;
-        }
-        if (total > 0) progress_ = static_cast<float>(std::min(1.0, static_cast<double>(index + 1) / total));
+  latest_ = {};
+  job_.start([video, folder, params](std::stop_token stop, const auto& report) {
+    if (params.every < 1) throw Error("video: every-n-th frame must be >= 1");
+    cv::VideoCapture capture;
+    if (!open_video_file(capture, video.string())) throw Error(video.string() + ": cannot open as a video");
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (ec) throw Error(folder.string() + ": cannot create the frames folder (" + ec.message() + ")");
+    const double total = capture.get(cv::CAP_PROP_FRAME_COUNT);
+    VideoFramesProgress progress;
+    cv::Mat frame;
+    for (long index = 0; !stop.stop_requested() && capture.read(frame); ++index) {
+      const bool keep = index % params.every == 0;
+      if (keep) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%06ld.png", index);
+        const auto path = folder / name;
+        if (!cv::imwrite(path.string(), frame)) throw Error(path.string() + ": cannot write the frame");
+        ++progress.written;
       }
-      if (written_ == 0 && !stop.stop_requested()) throw Error(video.string() + ": no frame could be decoded");
-      progress_ = 1;
-    } catch (const std::exception& e) {
-      error_ = e.what();
+      const float fraction = total > 0 ? static_cast<float>(std::min(1.0, static_cast<double>(index + 1) / total)) : 0;
+      // A message per written frame or per percent, not per decoded frame.
+      if (keep || fraction - progress.fraction >= 0.01f) {
+        progress.fraction = fraction;
+        report(progress);
+      }
     }
-    finished_ = true;  // publishes error_ (written before, read after finished() by the UI)
+    if (progress.written == 0 && !stop.stop_requested()) throw Error(video.string() + ": no frame could be decoded");
+    if (!stop.stop_requested()) progress.fraction = 1;
+    report(progress);
+    return progress.written;
   });
 }
 
-void VideoFramesJob::cancel() {
-  if (worker_.joinable()) worker_.request_stop();
-}
-
-void VideoFramesJob::wait() {
-  if (worker_.joinable()) worker_.join();
+void VideoFramesJob::poll() {
+  for (const VideoFramesProgress& p : job_.poll()) latest_ = p;
 }
 
 }  // namespace fieldlines::studio

@@ -1,10 +1,10 @@
 #pragma once
-// Turns a video into a folder of frames (every n-th) on a worker thread, so the studio can show a
+// Turns a video into a folder of frames (every n-th) in the background, so the studio can show a
 // progress bar and then open the folder as a project.
-#include <atomic>
 #include <filesystem>
-#include <string>
-#include <thread>
+#include <optional>
+
+#include "gui/model/job.hpp"
 
 namespace fieldlines::studio {
 
@@ -19,31 +19,33 @@ struct VideoFramesParams {
   int every = 10;  // keep frame 0, every, 2*every, ...
 };
 
+struct VideoFramesProgress {
+  float fraction = 0;  // in [0, 1]: frames read / frames in the file (when the container says)
+  int written = 0;
+};
+
+// The background Job (gui/model/job.hpp) that writes the frames.
 class VideoFramesJob {
  public:
-  VideoFramesJob() = default;
-  ~VideoFramesJob();
-  VideoFramesJob(const VideoFramesJob&) = delete;
-  VideoFramesJob& operator=(const VideoFramesJob&) = delete;
-
   // Writes frame_000000.png ... into `folder` (created). A running job is cancelled first.
   void start(const std::filesystem::path& video, const std::filesystem::path& folder, const VideoFramesParams& params);
-  void cancel();
-  void wait();
-  bool finished() const { return finished_.load(); }
-  // In [0, 1]; frames read / frames in the file (when the container tells the count).
-  float progress() const { return progress_.load(); }
-  int written() const { return written_.load(); }
-  // Set when finished with a failure (unreadable video, no frames, unwritable folder). Read it
-  // only after finished() is true.
-  const std::string& error() const { return error_; }
+  void cancel() { job_.cancel(); }
+  bool running() const { return job_.running(); }
+  void poll();  // UI thread, once per frame
+  void wait() {  // blocks until the worker has finished and everything is polled
+    job_.wait();
+    poll();
+  }
+  bool finished() const { return job_.outcome().has_value(); }
+  float progress() const { return latest_.fraction; }
+  int written() const { return latest_.written; }
+  // The frames written (also when cancelled), or why it failed: unreadable video, no frames,
+  // unwritable folder.
+  const std::optional<Outcome<int>>& outcome() const { return job_.outcome(); }
 
  private:
-  std::jthread worker_;
-  std::atomic<bool> finished_{false};
-  std::atomic<float> progress_{0};
-  std::atomic<int> written_{0};
-  std::string error_;
+  VideoFramesProgress latest_;
+  Job<VideoFramesProgress, int> job_;
 };
 
 }  // namespace fieldlines::studio

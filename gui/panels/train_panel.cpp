@@ -97,12 +97,13 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
   }
   if (const auto& outcome = job.outcome()) {
     ImGui::Separator();
-    if (!outcome->error.empty()) {
-      ImGui::TextColored({1, 0.4f, 0.4f, 1}, "training failed: %s", outcome->error.c_str());
+    if (!outcome->ok()) {
+      ImGui::TextColored({1, 0.4f, 0.4f, 1}, "training failed: %s", outcome->error().c_str());
     } else {
-      ImGui::Text("%s after %d iterations, score %.3f", outcome->result.cancelled ? "stopped" : "finished",
-                  outcome->result.iterations_run, outcome->result.score);
-      for (const auto& [name, c] : {std::pair{"train", outcome->train_counts}, std::pair{"test", outcome->test_counts}}) {
+      const studio::TrainingResult& r = outcome->value();
+      ImGui::Text("%s after %d iterations, score %.3f", r.run.cancelled ? "stopped" : "finished", r.run.iterations_run,
+                  r.run.score);
+      for (const auto& [name, c] : {std::pair{"train", r.train_counts}, std::pair{"test", r.test_counts}}) {
         ImGui::Text("%-5s marking P %s R %s | boundary P %s R %s", name,
                     studio::format_figure(c.marking, c.marking.precision()).c_str(),
                     studio::format_figure(c.marking, c.marking.recall()).c_str(),

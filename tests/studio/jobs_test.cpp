@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <thread>
@@ -13,7 +14,9 @@
 
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/error.hpp"
 #include "fixtures.hpp"
+#include "gui/model/job.hpp"
 #include "gui/model/message_queue.hpp"
 #include "gui/model/studio_controller.hpp"
 #include "gui/model/training_job.hpp"
@@ -72,6 +75,82 @@ TEST(MessageQueue, DeliversEverythingFromManyThreadsOnce) {
   for (int i = 0; i < 4000; ++i) ASSERT_EQ(got[static_cast<std::size_t>(i)], i);
 }
 
+// Polls like the UI thread until the job has ended; returns every progress message, in order.
+template <typename Job>
+auto poll_to_the_end(Job& job) {
+  decltype(job.poll()) all;
+  const auto end = std::chrono::steady_clock::now() + 30s;
+  while (job.running() && std::chrono::steady_clock::now() < end) {
+    for (auto& p : job.poll()) all.push_back(std::move(p));
+    std::this_thread::sleep_for(1ms);
+  }
+  return all;
+}
+
+TEST(Job, ReportsProgressInOrderThenExactlyOneResult) {
+  fs::Job<int, std::string> job;
+  EXPECT_FALSE(job.running());
+  job.start([](std::stop_token, const auto& report) {
+    for (int i = 1; i <= 100; ++i) report(i);
+    return std::string("done");
+  });
+  EXPECT_TRUE(job.running());
+  const std::vector<int> progress = poll_to_the_end(job);
+  ASSERT_FALSE(job.running());
+  ASSERT_EQ(progress.size(), 100u);
+  for (int i = 0; i < 100; ++i) EXPECT_EQ(progress[static_cast<std::size_t>(i)], i + 1);
+  ASSERT_TRUE(job.outcome().has_value());
+  ASSERT_TRUE(job.outcome()->ok());
+  EXPECT_EQ(job.outcome()->value(), "done");
+  EXPECT_TRUE(job.poll().empty());
+}
+
+TEST(Job, WhatTheWorkThrowsIsTheError) {
+  fs::Job<int, int> job;
+  job.start([](std::stop_token, const auto& report) -> int {
+    report(1);
+    throw fieldlines::Error("cannot start: bad parameter");
+  });
+  job.wait();
+  EXPECT_EQ(job.poll(), std::vector<int>{1});
+  ASSERT_TRUE(job.outcome().has_value());
+  EXPECT_FALSE(job.outcome()->ok());
+  EXPECT_EQ(job.outcome()->error(), "cannot start: bad parameter");
+}
+
+TEST(Job, StartStopsAndJoinsTheRunningWorkAndDropsItsMessages) {
+  fs::Job<int, int> job;
+  std::atomic<bool> first_ended{false};
+  job.start([&](std::stop_token stop, const auto& report) {
+    while (!stop.stop_requested()) report(-1);
+    first_ended = true;
+    return -1;
+  });
+  std::this_thread::sleep_for(5ms);
+  job.start([](std::stop_token, const auto& report) {
+    report(42);
+    return 7;
+  });
+  EXPECT_TRUE(first_ended);  // stopped and joined before the second began
+  const std::vector<int> progress = poll_to_the_end(job);
+  EXPECT_EQ(progress, std::vector<int>{42});
+  ASSERT_TRUE(job.outcome()->ok());
+  EXPECT_EQ(job.outcome()->value(), 7);
+}
+
+TEST(Job, DestroyingARunningJobStopsAndJoinsIt) {
+  std::atomic<bool> ended{false};
+  {
+    fs::Job<int, int> job;
+    job.start([&](std::stop_token stop, const auto&) {
+      while (!stop.stop_requested()) std::this_thread::sleep_for(1ms);
+      ended = true;
+      return 0;
+    });
+  }
+  EXPECT_TRUE(ended);
+}
+
 TEST(TrainingJob, RunsToTheEndAndReportsEveryIteration) {
   Labelled data;
   fs::StudioController c(fieldlines::Project::load(data.file), data.file);
@@ -87,9 +166,9 @@ TEST(TrainingJob, RunsToTheEndAndReportsEveryIteration) {
   ASSERT_FALSE(c.training().running());
   const auto& outcome = c.training().outcome();
   ASSERT_TRUE(outcome.has_value());
-  ASSERT_TRUE(outcome->error.empty()) << outcome->error;
-  EXPECT_FALSE(outcome->result.cancelled);
-  EXPECT_EQ(outcome->result.iterations_run, 15);
+  ASSERT_TRUE(outcome->ok()) << outcome->error();
+  EXPECT_FALSE(outcome->value().run.cancelled);
+  EXPECT_EQ(outcome->value().run.iterations_run, 15);
   EXPECT_EQ(c.training().best_scores().size(), 15u);
   for (std::size_t i = 1; i < c.training().best_scores().size(); ++i) {
     EXPECT_GE(c.training().best_scores()[i], c.training().best_scores()[i - 1]);  // global best never drops
@@ -97,13 +176,13 @@ TEST(TrainingJob, RunsToTheEndAndReportsEveryIteration) {
   ASSERT_TRUE(c.training().latest().has_value());
   EXPECT_EQ(c.training().latest()->particles.size(), 12u);
   // The test split (2 of the 6 labelled images) is counted apart from the train split.
-  EXPECT_GT(outcome->test_counts.marking.tp + outcome->test_counts.marking.fn, 0);
+  EXPECT_GT(outcome->value().test_counts.marking.tp + outcome->value().test_counts.marking.fn, 0);
 
   ASSERT_TRUE(c.apply_training_result());
-  EXPECT_EQ(c.thresholds(), outcome->result.thresholds);
+  EXPECT_EQ(c.thresholds(), outcome->value().run.thresholds);
   // Applying is saved at once (no poll, no pause): a crash right after loses nothing.
   EXPECT_FALSE(c.has_unsaved_settings());
-  EXPECT_EQ(fieldlines::Project::load(data.file).thresholds, outcome->result.thresholds);
+  EXPECT_EQ(fieldlines::Project::load(data.file).thresholds, outcome->value().run.thresholds);
   EXPECT_LT(c.train_counts().marking.fn, missed);  // live metrics follow the applied thresholds
 }
 
@@ -122,9 +201,10 @@ TEST(TrainingJob, CancelStopsEarlyWithTheBestSoFar) {
   c.training().wait();
   const auto& outcome = c.training().outcome();
   ASSERT_TRUE(outcome.has_value());
-  EXPECT_TRUE(outcome->result.cancelled);
-  EXPECT_LT(outcome->result.iterations_run, 1'000'000);
-  EXPECT_GE(outcome->result.iterations_run, 1);
+  ASSERT_TRUE(outcome->ok()) << outcome->error();
+  EXPECT_TRUE(outcome->value().run.cancelled);  // a stop is a result (the best so far), not an error
+  EXPECT_LT(outcome->value().run.iterations_run, 1'000'000);
+  EXPECT_GE(outcome->value().run.iterations_run, 1);
 }
 
 TEST(TrainingJob, NothingLabelledIsAnErrorNotACrash) {
@@ -134,7 +214,8 @@ TEST(TrainingJob, NothingLabelledIsAnErrorNotACrash) {
   c.start_training(small_training(5));
   c.training().wait();
   ASSERT_TRUE(c.training().outcome().has_value());
-  EXPECT_FALSE(c.training().outcome()->error.empty());
+  EXPECT_FALSE(c.training().outcome()->ok());
+  EXPECT_FALSE(c.training().outcome()->error().empty());
   EXPECT_FALSE(c.apply_training_result());
 }
 
@@ -145,7 +226,8 @@ TEST(TrainingJob, RestartReplacesARunningJob) {
   c.start_training(small_training(4));  // cancels and joins the first
   c.training().wait();
   ASSERT_TRUE(c.training().outcome().has_value());
-  EXPECT_EQ(c.training().outcome()->result.iterations_run, 4);
+  ASSERT_TRUE(c.training().outcome()->ok());
+  EXPECT_EQ(c.training().outcome()->value().run.iterations_run, 4);
   EXPECT_EQ(c.training().best_scores().size(), 4u);
 }
 
@@ -229,6 +311,27 @@ TEST(DetectionJob, CorruptImageIsReportedByNameAndTheOthersAreDetected) {
   EXPECT_TRUE(c.needs_detection(1));  // still undetected: "Detect new images" tries it again
 }
 
+TEST(DetectionJob, BadParametersFailTheJobNotAnImage) {
+  studio_test::TempDir dir("detect-params");
+  const auto file = studio_test::write_project(dir.path(), 2, 2);
+  fs::StudioController c(fieldlines::Project::load(file), file);
+  auto params = c.detector_params();
+  params.scan_interval = 0;  // rejected by LineDetector
+  c.set_detector_params(params);
+  c.detect_all(false);
+  c.detection().wait();
+  c.poll();
+  EXPECT_FALSE(c.detection().running());
+  ASSERT_TRUE(c.detection().outcome().has_value());
+  EXPECT_FALSE(c.detection().outcome()->ok());
+  EXPECT_TRUE(c.detection_report().failed.empty());  // no image is blamed
+  EXPECT_EQ(c.detection_report().detected, 0u);
+  EXPECT_NE(c.detection_report().summary().find("detection could not start: detector parameter scan_interval"),
+            std::string::npos)
+      << c.detection_report().summary();
+  EXPECT_EQ(c.project().images[0].segments.size(), 2u);  // the old segments stay
+}
+
 TEST(VideoFramesJob, KeepsEveryNthFrameAsPng) {
   studio_test::TempDir dir("video");
   const auto video = dir.path() / "match.avi";
@@ -251,8 +354,9 @@ TEST(VideoFramesJob, KeepsEveryNthFrameAsPng) {
   job.start(video, folder, {10});
   job.wait();
   ASSERT_TRUE(job.finished());
-  EXPECT_TRUE(job.error().empty()) << job.error();
-  EXPECT_EQ(job.written(), 3);  // frames 0, 10, 20
+  ASSERT_TRUE(job.outcome()->ok()) << job.outcome()->error();
+  EXPECT_EQ(job.outcome()->value(), 3);  // frames 0, 10, 20
+  EXPECT_EQ(job.written(), 3);
   EXPECT_FLOAT_EQ(job.progress(), 1);
   for (const char* name : {"frame_000000.png", "frame_000010.png", "frame_000020.png"}) {
     const cv::Mat frame = cv::imread((folder / name).string());
@@ -269,6 +373,7 @@ TEST(VideoFramesJob, UnreadableVideoIsAnError) {
   job.start(video, dir.path() / "frames", {5});
   job.wait();
   ASSERT_TRUE(job.finished());
-  EXPECT_FALSE(job.error().empty());
+  EXPECT_FALSE(job.outcome()->ok());
+  EXPECT_NE(job.outcome()->error().find("broken.mp4"), std::string::npos) << job.outcome()->error();
   EXPECT_EQ(job.written(), 0);
 }
