@@ -77,7 +77,7 @@ TEST_F(Cli, TrainWritesAValidThresholdsFileThatEvalReads) {
   const fl::ThresholdsFile f = fl::load_thresholds_file(out);
   const nlohmann::json& p = f.provenance;
   EXPECT_EQ(p["seed"], 3);
-  EXPECT_EQ(p["objective"], "tp-fp");
+  EXPECT_EQ(p["objective"], "tp-fp:1.5");  // the ours protocol's default
   EXPECT_EQ(p["data"][0], data.string());
   EXPECT_EQ(p["counts"]["segments"], 300);
   for (const char* part : {"train", "test"})

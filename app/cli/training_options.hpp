@@ -14,7 +14,7 @@ const std::set<std::string>& training_value_options();
 inline constexpr const char* kTrainingOptionsHelp =
     R"(  --protocol P         ours (default) or paper: sets all of the following, which then override
   --class C            marking (default), boundary or both
-  --objective O        tp-fp (default, the paper's), f1 or fbeta:B
+  --objective O        tp-fp:C = TP - C FP (ours tp-fp:1.5), tp-fp (the paper's), f1 or fbeta:B
   --particles N        PSO swarm size (100)
   --iterations N       PSO iterations (ours 100, paper 10)
   --inertia W          PSO inertia (ours 0.7, paper 0.1)

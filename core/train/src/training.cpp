@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <thread>
 
@@ -266,7 +267,7 @@ bool parse_train_class(std::string_view text, TrainClass& out) {
 
 double Objective::score(const ClassCounts& c) const {
   switch (kind) {
-    case Kind::TpMinusFp: return static_cast<double>(c.tp - c.fp);
+    case Kind::TpMinusFp: return static_cast<double>(c.tp) - fp_cost * static_cast<double>(c.fp);
     case Kind::F1: return c.f1();
     case Kind::FBeta: break;
   }
@@ -274,9 +275,13 @@ double Objective::score(const ClassCounts& c) const {
 }
 
 std::string Objective::name() const {
-  if (kind == Kind::TpMinusFp) return "tp-fp";
-  if (kind == Kind::F1) return "f1";
   char buf[32];
+  if (kind == Kind::TpMinusFp) {
+    if (fp_cost == 1.0) return "tp-fp";
+    std::snprintf(buf, sizeof buf, "tp-fp:%g", fp_cost);
+    return buf;
+  }
+  if (kind == Kind::F1) return "f1";
   std::snprintf(buf, sizeof buf, "fbeta:%g", beta);
   return buf;
 }
@@ -284,6 +289,15 @@ std::string Objective::name() const {
 Objective parse_objective(std::string_view text) {
   Objective o;
   if (text == "tp-fp") return o;
+  if (text.starts_with("tp-fp:")) {
+    const std::string num(text.substr(6));
+    char* end = nullptr;
+    const double c = std::strtod(num.c_str(), &end);
+    if (!num.empty() && end == num.c_str() + num.size() && std::isfinite(c) && c > 0 && c <= 100) {
+      o.fp_cost = c;
+      return o;
+    }
+  }
   if (text == "f1") return o.kind = Objective::Kind::F1, o;
   if (text.starts_with("fbeta:")) {
     const std::string num(text.substr(6));
@@ -295,7 +309,7 @@ Objective parse_objective(std::string_view text) {
       return o;
     }
   }
-  throw Error("objective must be tp-fp, f1 or fbeta:B with 0 < B <= 100, got '" + std::string(text) + "'");
+  throw Error("objective must be tp-fp, tp-fp:C, f1 or fbeta:B with 0 < B, C <= 100, got '" + std::string(text) + "'");
 }
 
 ClassCounts target_counts(const Counts& c, TrainClass target) {
