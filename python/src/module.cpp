@@ -8,6 +8,7 @@
 // is only ever waited for with the GIL released, so holding it and taking the GIL cannot
 // deadlock.
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
@@ -17,6 +18,7 @@
 #include <opencv2/core/utility.hpp>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
 #include "arrays.hpp"
@@ -65,6 +67,12 @@ void save_file(const fs::path& path, const py::handle& thresholds) {
   }
 }
 
+// None: the authors' defaults (ThresholdsFile{}).
+ThresholdsFile config_or_defaults(const py::object& thresholds) {
+  if (thresholds.is_none()) return {};
+  return thresholds_from_dict(thresholds, "thresholds");
+}
+
 std::unique_lock<std::mutex> lock_without_gil(std::mutex& m) {
   py::gil_scoped_release nogil;
   return std::unique_lock<std::mutex>(m);
@@ -84,6 +92,20 @@ class Detector {
       detector_.detect(view, segments_);
     }
     return segments_to_array(segments_);
+  }
+
+  // python/bench.py's reference: the same detect() timed in C++, without Python around it.
+  std::vector<double> time_detect(const py::array& image, int repeat) {
+    const cv::Mat view = image_view(image, "image");
+    std::vector<double> ms;
+    py::gil_scoped_release nogil;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    for (int i = 0; i < repeat; ++i) {
+      const auto t0 = std::chrono::steady_clock::now();
+      detector_.detect(view, segments_);
+      ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+    return ms;
   }
 
   py::dict thresholds() {
@@ -118,7 +140,7 @@ py::tuple labels() {
 }
 
 py::array classify_segments(const py::object& segments, const py::object& thresholds) {
-  const Thresholds t = thresholds.is_none() ? Thresholds{} : thresholds_from_dict(thresholds, "thresholds").thresholds;
+  const Thresholds t = config_or_defaults(thresholds).thresholds;
   const std::vector<Segment> in = segments_from_array(segments);
   py::array_t<std::int8_t> out(static_cast<py::ssize_t>(in.size()));
   auto* labels = out.mutable_data();
@@ -131,7 +153,7 @@ py::dict calibrate_images(const py::object& images, const py::object& thresholds
     throw py::type_error("images: expected a sequence of images, got one array (pass [image])");
   if (!py::isinstance<py::iterable>(images))
     throw py::type_error("images: expected a sequence of images (list of NumPy arrays)");
-  const ThresholdsFile start = thresholds.is_none() ? ThresholdsFile{} : thresholds_from_dict(thresholds, "thresholds");
+  const ThresholdsFile start = config_or_defaults(thresholds);
   // Every image is checked (and kept alive) before the GIL is released.
   std::vector<py::array> arrays;
   std::vector<cv::Mat> views;
@@ -208,7 +230,7 @@ LineDetector(thresholds=None): the authors' defaults, or a thresholds dict (the 
 file's form, e.g. from load_thresholds_file or calibrate). Keep one per thread: it reuses its
 buffers between calls.)")
       .def(py::init([](const py::object& thresholds) {
-             return new Detector(thresholds.is_none() ? ThresholdsFile{} : thresholds_from_dict(thresholds, "thresholds"));
+             return new Detector(config_or_defaults(thresholds));
            }),
            py::arg("thresholds") = py::none())
       .def_static("from_thresholds_file", [](const fs::path& path) { return new Detector(load_file(path)); },
@@ -221,6 +243,8 @@ pixels), grad_x, grad_y (3 x float32, R,G,B; grad_y image-down), label (int code
 A C-contiguous image (or a crop of one) is read without a copy; the GIL is released meanwhile.)")
       .def_property("thresholds", &Detector::thresholds, &Detector::set_thresholds,
                     "The detector's thresholds file as a dict; assign a dict to change it.")
+      .def("_time_detect", &Detector::time_detect, py::arg("image"), py::arg("repeat") = 1,
+           "Milliseconds of each of `repeat` detect() calls timed in C++ (for python/bench.py).")
       .def("__repr__", [](Detector&) { return std::string("<fieldlines.LineDetector>"); });
 
   m.def("load_thresholds_file", [](const fs::path& path) { return thresholds_dict(load_file(path)); },

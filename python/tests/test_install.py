@@ -21,11 +21,11 @@ def test_installed_module_imports_from_the_prefix(tmp_path):
     probe = ("import fieldlines, numpy as np; "
              "print(fieldlines.__file__); "
              "print(len(fieldlines.LineDetector().detect(np.zeros((48, 64, 3), np.uint8))))")
-    out = subprocess.run([sys.executable, "-c", probe], env=env, check=True, capture_output=True, text=True)
+    out = subprocess.run([sys.executable, "-c", probe], env=env, cwd=tmp_path, check=True, capture_output=True, text=True)
     module, count = out.stdout.split()
     assert module.startswith(str(site)) and count == "0"
     maps = subprocess.run(
         [sys.executable, "-c", "import fieldlines; print(open('/proc/self/maps').read())"],
-        env=env, check=True, capture_output=True, text=True).stdout
+        env=env, cwd=tmp_path, check=True, capture_output=True, text=True).stdout
     ours = {line.split()[-1] for line in maps.splitlines() if "libfieldlines_" in line}
     assert ours and all(path.startswith(str(prefix)) for path in ours), ours
