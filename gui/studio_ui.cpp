@@ -138,4 +138,16 @@ void draw_studio(studio::StudioController& controller, UiState& ui, std::span<co
   ImGui::End();
 }
 
+void draw_video_import(const studio::VideoImport& import, UiState& ui) {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos({vp->WorkPos.x + vp->WorkSize.x / 2, vp->WorkPos.y + vp->WorkSize.y / 2}, 0, {0.5f, 0.5f});
+  ImGui::SetNextWindowSize({480, 0});
+  ImGui::Begin("Reading video", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::TextWrapped("%s: keeping every %d-th frame", import.video().string().c_str(), import.every());
+  ImGui::ProgressBar(import.progress(), {-1, 0});
+  ImGui::Text("%d frames written", import.written());
+  if (ImGui::Button("Cancel")) ui.quit_requested = true;
+  ImGui::End();
+}
+
 }  // namespace fieldlines::gui

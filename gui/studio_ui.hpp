@@ -9,6 +9,7 @@
 #include "gui/model/frame_stats.hpp"
 #include "gui/image_view.hpp"
 #include "gui/model/studio_controller.hpp"
+#include "gui/model/video_frames.hpp"
 
 namespace fieldlines::gui {
 
@@ -43,6 +44,10 @@ struct UiState {
 
 // Draws one frame of the UI (between ImGui::NewFrame and ImGui::Render).
 void draw_studio(studio::StudioController& controller, UiState& ui, std::span<const KeyPress> keys = {});
+
+// Draws the frame shown while a video's frames are extracted, before any project is open: the
+// progress and a Cancel button (which asks to quit, as closing the window does).
+void draw_video_import(const studio::VideoImport& import, UiState& ui);
 
 // Keyboard shortcuts (ignored while a text field has focus): M/B/N/C label the hovered segment
 // marking/boundary/none/clear, Left/Right previous/next image, E next image with errors, F fit,

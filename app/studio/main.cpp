@@ -1,5 +1,5 @@
 // fieldlines-studio: window, main loop and command line. All state lives in StudioController
-// (app/studio/logic); all drawing in fieldlines::gui.
+// (gui/model); all drawing in fieldlines::gui. One loop draws every frame, the video import too.
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -114,50 +114,6 @@ class StateWriter {
   std::string last_;
 };
 
-// Extracts every n-th frame of a video into a folder while showing a progress bar; returns the
-// folder to open. Throws fieldlines::Error when the video cannot be read; an existing frames
-// folder is reused as it is.
-std::filesystem::path frames_of_video(GLFWwindow* window, const std::filesystem::path& video, int every) {
-  const auto folder = studio::frames_folder_for(video, every);
-  if (std::filesystem::exists(folder)) return folder;
-  studio::VideoFramesJob job;
-  job.start(video, folder, {every});
-  for (job.poll(); !job.finished(); job.poll()) {
-    if (glfwWindowShouldClose(window)) {
-      job.cancel();
-      job.wait();
-      throw Error("cancelled while reading " + video.string());
-    }
-    glfwPollEvents();
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos({vp->WorkPos.x + vp->WorkSize.x / 2, vp->WorkPos.y + vp->WorkSize.y / 2}, 0, {0.5f, 0.5f});
-    ImGui::SetNextWindowSize({480, 0});
-    ImGui::Begin("Reading video", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
-    ImGui::TextWrapped("%s: keeping every %d-th frame", video.string().c_str(), every);
-    ImGui::ProgressBar(job.progress(), {-1, 0});
-    ImGui::Text("%d frames written", job.written());
-    if (ImGui::Button("Cancel")) glfwSetWindowShouldClose(window, GLFW_TRUE);
-    ImGui::End();
-    ImGui::Render();
-    int width = 0, height = 0;
-    glfwGetFramebufferSize(window, &width, &height);
-    glViewport(0, 0, width, height);
-    glClearColor(0.1f, 0.1f, 0.11f, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    glfwSwapBuffers(window);
-  }
-  if (!job.outcome()->ok()) {
-    std::error_code ec;
-    std::filesystem::remove_all(folder, ec);  // a half-written folder must not be reused
-    throw Error(job.outcome()->error());
-  }
-  return folder;
-}
-
 // The project to open, resolved before any window exists, so that a missing path or a damaged
 // project file is a plain message on stderr and exit 2, not a window that closes again. A video
 // is only located here: its frames are extracted with a progress bar once the window is up.
@@ -205,35 +161,41 @@ int run(const studio::StudioArgs& args) {
   std::vector<std::string> recent = bench ? std::vector<std::string>{} : studio::load_recent(recent_file);
   Startup start = resolve_startup(args, recent);
   Window window(args.window_width, args.window_height, !bench);
-  if (!start.video.empty()) {
-    start.opened = studio::open_project(frames_of_video(window.get(), start.video, args.video_every));
-  }
-  Project project = std::move(start.opened.project);
-  const std::filesystem::path project_file = start.opened.file;
-  const bool needs_detection = start.opened.needs_detection;
   studio::ControllerOptions options;
   options.autosave = start.autosave;
-  if (!bench) {
-    studio::remember(recent, std::filesystem::absolute(project_file).string());
-    studio::save_recent(recent_file, recent);
-  }
-
-  // Behind a pointer so that opening a recent project can replace the whole session.
-  auto session = std::make_unique<studio::StudioController>(std::move(project), project_file, options);
-  if (needs_detection) session->detect_all(true);
   studio::FrameStats frame_stats(bench ? static_cast<std::size_t>(args.bench_frames) : 240);
   gui::UiState ui;
   ui.frame_stats = &frame_stats;
   ui.recent_projects = recent;
   std::vector<gui::KeyPress>& keys = window.keys();
 
+  // Behind a pointer so that opening a recent project can replace the whole session; empty while
+  // a video's frames are still being extracted (`import`), which the same loop shows.
+  std::unique_ptr<studio::StudioController> session;
+  std::unique_ptr<studio::VideoImport> import;
+  const auto open_session = [&](studio::OpenedProject opened) {
+    if (session) session->flush();
+    session.reset();  // joins its jobs before the new session starts
+    session = std::make_unique<studio::StudioController>(std::move(opened.project), opened.file, options);
+    if (opened.needs_detection) session->detect_all(true);
+    if (!bench) {
+      studio::remember(recent, std::filesystem::absolute(opened.file).string());
+      studio::save_recent(recent_file, recent);
+      ui.recent_projects = recent;
+    }
+  };
+  if (start.video.empty()) {
+    open_session(std::move(start.opened));
+  } else {
+    import = std::make_unique<studio::VideoImport>(start.video, args.video_every);
+  }
+
   StateWriter state_writer(args.state_file);
   double last = glfwGetTime();  // end of the previous frame
   int frames = 0;
   int busy_frames = 0;  // keep rendering a few frames after any input so ImGui settles
   while (!glfwWindowShouldClose(window.get()) && !ui.quit_requested) {
-    studio::StudioController& controller = *session;
-    const bool working = controller.training().running() || controller.detection().running();
+    const bool working = import || session->training().running() || session->detection().running();
     if (bench || working || busy_frames > 0) {
       glfwPollEvents();
     } else {
@@ -245,11 +207,22 @@ int run(const studio::StudioArgs& args) {
     if (!keys.empty() || ImGui::GetIO().MouseDelta.x != 0 || ImGui::GetIO().MouseDelta.y != 0) busy_frames = 4;
     for (bool down : ImGui::GetIO().MouseDown) busy_frames = down ? 4 : busy_frames;
 
-    controller.poll(glfwGetTime());
+    if (import) {
+      import->poll();  // a failed extraction throws: a message and exit 2, as for a bad project
+      if (import->done()) {
+        open_session(studio::open_project(import->folder()));
+        import.reset();
+      }
+    }
+    if (session) session->poll(glfwGetTime());
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    gui::draw_studio(controller, ui, keys);
+    if (session) {
+      gui::draw_studio(*session, ui, keys);
+    } else {
+      gui::draw_video_import(*import, ui);
+    }
     keys.clear();
     ImGui::Render();
     int width = 0, height = 0;
@@ -259,21 +232,16 @@ int run(const studio::StudioArgs& args) {
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glfwSwapBuffers(window.get());
-    state_writer.update(controller, ui);
-    if (!ui.open_request.empty()) {
+    if (session) state_writer.update(*session, ui);
+    if (session && !ui.open_request.empty()) {
       const std::string request = std::exchange(ui.open_request, {});
       try {
         auto opened = studio::open_project(request);
-        controller.flush();
-        session.reset();  // joins its jobs before the new session starts
-        session = std::make_unique<studio::StudioController>(std::move(opened.project), opened.file, options);
-        if (opened.needs_detection) session->detect_all(true);
+        const std::string file = opened.file.string();
+        open_session(std::move(opened));
         ui.image_view.texture_generation = static_cast<std::size_t>(-1);
         ui.image_view.fit_requested = true;
-        studio::remember(recent, std::filesystem::absolute(opened.file).string());
-        studio::save_recent(recent_file, recent);
-        ui.recent_projects = recent;
-        ui.status_message = "opened " + opened.file.string();
+        ui.status_message = "opened " + file;
       } catch (const std::exception& e) {
         ui.status_message = e.what();
       }
@@ -284,6 +252,8 @@ int run(const studio::StudioArgs& args) {
     ++frames;
     if (bench && frames >= args.bench_frames) break;
   }
+  // Closed before the frames were ready: ~VideoImport stops it and removes the partial folder.
+  if (import) throw Error("cancelled while reading " + import->video().string());
   session->flush();  // threshold edits of the last half second
   if (bench) {
     std::printf("bench: %d frames at %dx%d, %zu segments, median frame time %.3f ms\n", frames, args.window_width,

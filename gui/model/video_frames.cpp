@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <exception>
 #include <system_error>
+#include <utility>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
@@ -65,6 +66,33 @@ void VideoFramesJob::start(const std::filesystem::path& video, const std::filesy
 
 void VideoFramesJob::poll() {
   for (const VideoFramesProgress& p : job_.poll()) latest_ = p;
+}
+
+VideoImport::VideoImport(std::filesystem::path video, int every)
+    : video_(std::move(video)), folder_(frames_folder_for(video_, every)), every_(every),
+      done_(std::filesystem::exists(folder_)) {
+  if (!done_) job_.start(video_, folder_, {every_});
+}
+
+VideoImport::~VideoImport() {
+  if (done_ || !job_.running()) return;
+  job_.cancel();
+  job_.wait();
+  std::error_code ec;
+  std::filesystem::remove_all(folder_, ec);
+}
+
+void VideoImport::poll() {
+  if (done_) return;
+  job_.poll();
+  const auto& outcome = job_.outcome();
+  if (!outcome) return;
+  if (!outcome->ok()) {
+    std::error_code ec;
+    std::filesystem::remove_all(folder_, ec);
+    throw Error(outcome->error());
+  }
+  done_ = true;
 }
 
 }  // namespace fieldlines::studio

@@ -48,4 +48,31 @@ class VideoFramesJob {
   Job<VideoFramesProgress, int> job_;
 };
 
+// A video given on the command line, turned into its frames folder while the main loop shows the
+// progress as part of its normal frame; then the folder opens as a project. An existing folder is
+// reused as it is, so a failed or stopped extraction must never leave one behind.
+class VideoImport {
+ public:
+  VideoImport(std::filesystem::path video, int every);  // starts, unless the folder exists
+  ~VideoImport();  // an unfinished extraction is stopped and its half-written folder removed
+  VideoImport(const VideoImport&) = delete;
+  VideoImport& operator=(const VideoImport&) = delete;
+
+  // UI thread, once per frame. Throws fieldlines::Error with the reason when the extraction
+  // failed (its folder removed first).
+  void poll();
+  bool done() const { return done_; }  // folder() is complete: open it
+  const std::filesystem::path& video() const { return video_; }
+  const std::filesystem::path& folder() const { return folder_; }
+  int every() const { return every_; }
+  float progress() const { return job_.progress(); }
+  int written() const { return job_.written(); }
+
+ private:
+  std::filesystem::path video_, folder_;
+  int every_;
+  bool done_ = false;
+  VideoFramesJob job_;
+};
+
 }  // namespace fieldlines::studio

@@ -377,3 +377,75 @@ TEST(VideoFramesJob, UnreadableVideoIsAnError) {
   EXPECT_NE(job.outcome()->error().find("broken.mp4"), std::string::npos) << job.outcome()->error();
   EXPECT_EQ(job.written(), 0);
 }
+
+namespace {
+// An MJPG video of `frames` green frames.
+void write_video(const std::filesystem::path& video, int frames, cv::Size size) {
+  cv::VideoWriter writer(video.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25, size);
+  ASSERT_TRUE(writer.isOpened());
+  for (int i = 0; i < frames; ++i) writer.write(studio_test::field_image(size.width, size.height, {}));
+}
+}  // namespace
+
+TEST(VideoImport, ExtractsThenIsDoneAndReusesAnExistingFolder) {
+  studio_test::TempDir dir("import");
+  const auto video = dir.path() / "clip.avi";
+  write_video(video, 12, {96, 64});
+  {
+    fs::VideoImport import(video, 5);
+    EXPECT_EQ(import.folder(), dir.path() / "clip-every5");
+    const auto end = std::chrono::steady_clock::now() + 30s;
+    while (!import.done() && std::chrono::steady_clock::now() < end) {
+      import.poll();
+      std::this_thread::sleep_for(1ms);
+    }
+    ASSERT_TRUE(import.done());
+    EXPECT_EQ(import.written(), 3);  // frames 0, 5, 10
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "clip-every5" / "frame_000010.png"));  // kept once done
+  const fs::VideoImport again(video, 5);
+  EXPECT_TRUE(again.done());  // the folder exists: reused as it is, nothing extracted
+  EXPECT_EQ(again.written(), 0);
+}
+
+TEST(VideoImport, FailureThrowsAndLeavesNoFolder) {
+  studio_test::TempDir dir("import-bad");
+  const auto video = dir.path() / "broken.mp4";
+  fieldlines::write_file_atomically(video, "not a video at all");
+  fs::VideoImport import(video, 5);
+  const auto end = std::chrono::steady_clock::now() + 30s;
+  bool threw = false;
+  while (!threw && std::chrono::steady_clock::now() < end) {
+    try {
+      import.poll();
+    } catch (const fieldlines::Error& e) {
+      threw = true;
+      EXPECT_NE(std::string(e.what()).find("broken.mp4"), std::string::npos) << e.what();
+    }
+    std::this_thread::sleep_for(1ms);
+  }
+  EXPECT_TRUE(threw);
+  EXPECT_FALSE(import.done());
+  EXPECT_FALSE(std::filesystem::exists(import.folder()));
+}
+
+TEST(VideoImport, StoppedBeforeTheEndLeavesNoFolder) {
+  studio_test::TempDir dir("import-stop");
+  const auto video = dir.path() / "long.avi";
+  write_video(video, 400, {320, 240});
+  std::filesystem::path folder;
+  {
+    fs::VideoImport import(video, 1);
+    folder = import.folder();
+    // Wait for the first frames on disk, then close (the window closed, or Cancel).
+    const auto end = std::chrono::steady_clock::now() + 30s;
+    while (import.written() == 0 && std::chrono::steady_clock::now() < end) {
+      import.poll();
+      std::this_thread::sleep_for(1ms);
+    }
+    ASSERT_GT(import.written(), 0);
+    ASSERT_FALSE(import.done());
+  }
+  // A half-written folder would be reused as complete next time: it must be gone.
+  EXPECT_FALSE(std::filesystem::exists(folder));
+}

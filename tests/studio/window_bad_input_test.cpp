@@ -12,6 +12,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/data/project.hpp"
@@ -90,6 +91,32 @@ TEST_F(StudioBadInput, CorruptVideoIsRefusedWithAMessage) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("match.mp4"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir() / "match-every10")) << "a half-written frames folder was left";
+}
+
+// The good case beside the corrupt one: the frames are extracted while the normal main loop
+// shows the progress, then the frames folder opens as a project in the same window.
+TEST_F(StudioBadInput, VideoBecomesAFramesProjectInTheSameLoop) {
+  const fs::path video = dir() / "match.avi";
+  {
+    cv::VideoWriter writer(video.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25, {320, 240});
+    ASSERT_TRUE(writer.isOpened());
+    const auto sample = fieldlines::synth::generate(fieldlines::synth::SynthParams{}, 5, 0);
+    cv::Mat frame;
+    cv::resize(sample.bgr, frame, {320, 240});
+    for (int i = 0; i < 25; ++i) writer.write(frame);
+  }
+  project_ = video;
+  auto studio = start_studio();  // returns once the state file exists: a project is open
+  ASSERT_TRUE(studio->running()) << log();
+  const fs::path folder = dir() / "match-every10";
+  for (const char* name : {"frame_000000.png", "frame_000010.png", "frame_000020.png"}) {
+    EXPECT_TRUE(fs::exists(folder / name)) << name;
+  }
+  EXPECT_FALSE(fs::exists(folder / "frame_000001.png"));
+  ASSERT_EQ(studio_test::run(x("key ctrl+q")), 0);
+  ASSERT_TRUE(studio_test::wait_for([&] { return !studio->running(); }, 15s));
+  EXPECT_EQ(studio->exit_code(), 0) << log();
+  EXPECT_EQ(fieldlines::Project::load(folder / "fieldlines-project.json").images.size(), 3u);
 }
 
 TEST_F(StudioBadInput, DamagedAndUnusualPicturesAreReportedAndTheRestWorks) {
