@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # All tests: the release build's suite, the same suite under AddressSanitizer +
-# UndefinedBehaviorSanitizer, and each libFuzzer target for FUZZ_SECONDS (default 30).
-# FIELDLINES_TEST_STAGES selects stages (default "release asan fuzz").
+# UndefinedBehaviorSanitizer, each libFuzzer target for FUZZ_SECONDS (default 30), and the
+# aarch64 cross build with its tests under qemu-user (scripts/arm64.sh).
+# FIELDLINES_TEST_STAGES selects stages (default "release asan fuzz arm64").
 set -euo pipefail
 cd "$(dirname "$0")/.."
-stages="${FIELDLINES_TEST_STAGES:-release asan fuzz}"
+stages="${FIELDLINES_TEST_STAGES:-release asan fuzz arm64}"
 for stage in $stages; do
   echo "=== test stage: $stage ==="
   case "$stage" in
