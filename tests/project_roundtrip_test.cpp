@@ -2,8 +2,11 @@
 // project made by `autolabel` trains (regression: thresholds were once saved as nulls).
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "cli_test_support.hpp"
 #include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/error.hpp"
 
 namespace fieldlines::test {
 namespace {
@@ -31,6 +34,45 @@ TEST_F(ProjectRoundTrip, SaveThenLoadKeepsEverything) {
   EXPECT_EQ(q.images[0].segments[1].label, Label::Unlabelled);
   EXPECT_EQ(q.labelled_count(), 1u);
   q.save(file);  // a loaded project can be saved over itself
+}
+
+TEST_F(ProjectRoundTrip, ProposalsRoundTripAndAreNeverLabels) {
+  Project p;
+  ImageEntry e;
+  e.path = "a.png";
+  e.segments.push_back({1, 2, 3, 4, 50, {1, 2, 3}, {4, 5, 6}, Label::Marking});
+  e.segments.push_back({5, 6, 7, 8, 60, {0, 0, 0}, {9, 9, 9}, Label::Unlabelled});
+  e.proposals = {Label::Unlabelled, Label::Boundary};
+  p.images.push_back(e);
+  ImageEntry without = e;
+  without.path = "b.png";
+  without.proposals.clear();
+  p.images.push_back(without);
+  const auto file = dir_ / "project.json";
+  p.save(file);
+  Project q = Project::load(file);
+  EXPECT_EQ(q.images[0].proposals, e.proposals);
+  EXPECT_TRUE(q.images[1].proposals.empty());
+  EXPECT_EQ(q.images[1].proposal(1), Label::Unlabelled);
+  EXPECT_EQ(q.labelled_count(), 2u);  // one human label per image; the proposal is not one
+  EXPECT_EQ(q.labelled().count(Label::Boundary), 0u);
+  // Re-detection drops them: they were for the old segments.
+  q.replace_segments(0, q.images[0].segments);
+  EXPECT_TRUE(q.images[0].proposals.empty());
+  // A proposals array of the wrong length or with a bad label is refused with its place.
+  const nlohmann::json good = nlohmann::json::parse(read_text(file));
+  for (const auto& [edit, where] : {std::pair<const char*, const char*>{"label", "proposals[1]"}, {"length", ".proposals"}}) {
+    nlohmann::json bad = good;
+    if (std::string(edit) == "label") bad["images"][0]["proposals"][1] = "wall";
+    else bad["images"][0]["proposals"].erase(0);
+    write_bytes("bad.json", bad.dump());
+    try {
+      Project::load(dir_ / "bad.json");
+      ADD_FAILURE() << "a bad proposals array must not load (" << edit << ")";
+    } catch (const Error& err) {
+      EXPECT_NE(std::string(err.what()).find(where), std::string::npos) << err.what();
+    }
+  }
 }
 
 TEST_F(ProjectRoundTrip, AutolabelledProjectTrains) {

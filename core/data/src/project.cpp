@@ -69,6 +69,17 @@ Project parse_project(const std::string& text, const std::string& where) {
     if (!im.contains("segments") || !im["segments"].is_array()) throw Error(w + ": missing array 'segments'");
     for (std::size_t k = 0; k < im["segments"].size(); ++k)
       e.segments.push_back(segment_from_json(im["segments"][k], w + ".segments[" + std::to_string(k) + "]"));
+    if (im.contains("proposals")) {
+      const json& props = im["proposals"];
+      if (!props.is_array() || props.size() != e.segments.size())
+        throw Error(w + ".proposals: expected an array with one label per segment");
+      for (std::size_t k = 0; k < props.size(); ++k) {
+        Label l = Label::Unlabelled;
+        if (!props[k].is_string() || !parse_label(props[k].get<std::string>(), l))
+          throw Error(w + ".proposals[" + std::to_string(k) + "]: must be one of marking, boundary, none, unlabelled");
+        e.proposals.push_back(l);
+      }
+    }
     p.images.push_back(std::move(e));
   }
   return p;
@@ -147,7 +158,13 @@ void Project::save(const std::filesystem::path& file) const {
   for (const ImageEntry& e : images) {
     json segs = json::array();
     for (const Segment& s : e.segments) segs.push_back(segment_to_json(s));
-    images_json.push_back({{"path", e.path}, {"detect_ms", e.detect_ms}, {"segments", std::move(segs)}});
+    json image = {{"path", e.path}, {"detect_ms", e.detect_ms}, {"segments", std::move(segs)}};
+    if (!e.proposals.empty()) {
+      json props = json::array();
+      for (std::size_t k = 0; k < e.segments.size(); ++k) props.push_back(std::string(to_string(e.proposal(k))));
+      image["proposals"] = std::move(props);
+    }
+    images_json.push_back(std::move(image));
   }
   j["images"] = std::move(images_json);
   write_file_atomically(file, j.dump(1) + "\n");
@@ -173,6 +190,7 @@ ReattachStats Project::replace_segments(std::size_t image, std::vector<Segment> 
   ImageEntry& e = images[image];
   const ReattachStats st = reattach_labels(e.segments, detected, params);
   e.segments = std::move(detected);
+  e.proposals.clear();  // they were for the old segments
   return st;
 }
 

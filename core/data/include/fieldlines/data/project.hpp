@@ -9,7 +9,8 @@
 //              split of fieldlines/data/split_spec.hpp; absent fields take these, the CLI's, defaults)
 //     "segment_columns": ["x0","y0","x1","y1","saliency","gx_r","gx_g","gx_b","gy_r","gy_g","gy_b","label"],
 //     "images": [ { "path": "frames/0001.png", "detect_ms": 3.1,
-//                   "segments": [[x0, y0, x1, y1, saliency, gx.., gy.., "marking"], ...] } ] }
+//                   "segments": [[x0, y0, x1, y1, saliency, gx.., gy.., "marking"], ...],
+//                   "proposals": ["marking", "unlabelled", ...] } ] }   (optional, one per segment)
 // Saves are atomic and refuse to replace a file that is not a readable project of a version
 // this build understands, so a damaged or newer file is never overwritten.
 #include <filesystem>
@@ -32,6 +33,12 @@ struct ImageEntry {
   std::string path;               // relative to the project folder
   std::vector<Segment> segments;  // segment.label = the human label, Unlabelled by default
   double detect_ms = 0;           // time the detector took on this image
+  // Machine-proposed labels, never counted as labels: empty, or one per segment (Unlabelled =
+  // no proposal). Accepting one makes it the segment's label; re-detection drops them.
+  std::vector<Label> proposals;
+
+  // The proposal for segment i (Unlabelled when there is none).
+  Label proposal(std::size_t i) const { return i < proposals.size() ? proposals[i] : Label::Unlabelled; }
 };
 
 // How re-detected segments inherit the labels of the old ones.
