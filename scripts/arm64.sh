@@ -151,6 +151,7 @@ run() { "$qemu" -L "$sysroot" "$@"; }
 failed=0
 for t in "${tests[@]}"; do
   log="$out/$t.qemu.log"
+  rm -f "$log"
   say "running $t under $(basename "$qemu")"
   if run "$out/tests/$t" --gtest_brief=1 >"$log" 2>&1; then
     grep -E '^\[  PASSED  \]|SKIPPED' "$log" >&2 || true
@@ -160,15 +161,21 @@ for t in "${tests[@]}"; do
 done
 # The issue's bar, stricter than the tests' own thresholds (they accept 90 % recall): every
 # reference segment matched with the same count, same labels, and every classifier vector agrees.
+# Without the authors' data (../shared) those tests skip; as for the other stages that is a
+# failure under CI=true and a message elsewhere.
 fid="$out/detector_fidelity_test.qemu.log" cls="$out/classifier_test.qemu.log"
-if [[ " ${tests[*]} " == *" detector_fidelity_test "* ]]; then
+bars=1
+if [[ ! -d "$root/../shared/data/elsed-ssl" && "${CI:-}" != true ]]; then
+  say "no ../shared/data/elsed-ssl: the fidelity and classifier-vector bars are not checked"; bars=0
+fi
+if ((bars)) && [[ " ${tests[*]} " == *" detector_fidelity_test "* ]]; then
   grep -E '^(fidelity|original ELSED fidelity):' "$fid" >&2 || true
   grep -qE '^fidelity: reference ([0-9]+), ours \1 .*matched within 2 px \1 \(100\.0%\).*gradients within 1\.5 \1 .*saliency within 10% \1, same label \1 \(100\.0%\)' "$fid" \
     || { say "method's configuration: not every reference segment matched (or the data is missing)"; failed=1; }
   grep -qE '^original ELSED fidelity: reference ([0-9]+), ours \1, matched within 2 px \1 \(100\.0%\)' "$fid" \
     || { say "original ELSED configuration: not every reference segment matched"; failed=1; }
 fi
-if [[ " ${tests[*]} " == *" classifier_test "* ]]; then
+if ((bars)) && [[ " ${tests[*]} " == *" classifier_test "* ]]; then
   grep -E '^classification vectors:' "$cls" >&2 || true
   grep -qE '^classification vectors: ([0-9]+) rows, agree \1 with pi, \1 with' "$cls" \
     || { say "classifier: not every reference vector agrees (or the data is missing)"; failed=1; }
@@ -205,6 +212,10 @@ PY
     say "CLI on $images: $(grep -o '"label"' "$out/cli_detect.json" | wc -l) segments (no amd64 build to compare)"
   fi
 fi
+# One closing line for the stage: GoogleTest's counts over the test executables run.
+logs=(); for t in "${tests[@]}"; do logs+=("$out/$t.qemu.log"); done
+count() { cat "${logs[@]}" 2>/dev/null | sed -n "s/^\[  $1  \] \([0-9]*\) tests\{0,1\}[.,].*/\1/p" | awk '{s += $1} END {print s + 0}'; }
+echo "arm64 (qemu): $(count PASSED) passed, $(count FAILED) failed"
 ((failed == 0)) || { say "tests FAILED ($(elapsed))"; exit 1; }
 
 # --- 5. the robot's .deb -------------------------------------------------------------------
