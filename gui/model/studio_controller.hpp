@@ -135,6 +135,27 @@ class StudioController {
   // Mean detector time over the project's detected images.
   double mean_detect_ms() const;
 
+  // --- review loop (gui/model/review.cpp): proposals, one-key accept, uncertain first
+  // Proposes a label for every segment of the project (fieldlines/train/review.hpp: label-free
+  // until a class has enough labels, then trained on them), kept as the project's proposals
+  // (never counted as labels) and autosaved. Returns the one-line summary (also summary()).
+  std::string propose();
+  const std::string& proposal_summary() const { return proposal_summary_; }
+  // The proposal shown for a segment of the current image: Unlabelled when it has a label or none.
+  Label proposal(std::size_t segment) const;
+  // The current image's proposals for its unlabelled segments become labels (one undo step),
+  // then moves to the next image with proposals or unlabelled segments left. Returns how many.
+  std::size_t accept_proposals();
+  // Unlabelled segments in the whole project: what is left to review.
+  std::size_t to_review() const;
+  // How close the image's least certain unlabelled segment is to flipping (decision margin,
+  // fieldlines/train/review.hpp); infinity when it has none. Smaller = review first.
+  double image_uncertainty(std::size_t image) const;
+  // Selects the image of the project's least certain unlabelled segment, hovers it and asks the
+  // view to centre on it (take_focus_request); empty when nothing is left to review.
+  std::optional<SegmentRef> focus_most_uncertain();
+  std::optional<std::size_t> take_focus_request();
+
   // --- training (background)
   void start_training(const TrainParams& params);
   void cancel_training() { training_.cancel(); }
@@ -181,6 +202,9 @@ class StudioController {
   DetectionReport detection_report_;
   std::vector<std::string> detection_errors_;  // per image
   TrainingJob training_;
+  std::optional<Thresholds> proposal_thresholds_;  // what the proposals were made with
+  std::string proposal_summary_;
+  std::optional<std::size_t> focus_request_;
 };
 
 }  // namespace fieldlines::studio

@@ -105,7 +105,10 @@ std::optional<Mixture> fit_mixture(const std::vector<double>& x, double theta_a,
       n_achromatic += r_achromatic[i];
       sum += r_class[i] * x[i];
     }
-    if (n_class < 1 || n_achromatic < 1) return std::nullopt;
+    if (n_class < 1) return std::nullopt;
+    // A set without a single grey edge (a clean synthetic field) keeps a trace of the grey
+    // component instead of failing: the cut then falls where the class's own tail ends.
+    n_achromatic = std::max(n_achromatic, 1e-3);
     m.w_class = n_class / n;
     m.w_achromatic = n_achromatic / n;
     m.w_uniform = std::max(0.0, 1.0 - m.w_class - m.w_achromatic);

@@ -1,0 +1,105 @@
+// The studio's review loop: propose labels, accept an image's proposals with one key, and
+// visit the least certain segments first. Part of StudioController, in its own file because
+// it is one concept: what a person reviews next.
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "fieldlines/train/protocols.hpp"
+#include "fieldlines/train/review.hpp"
+#include "gui/model/studio_controller.hpp"
+
+namespace fieldlines::studio {
+
+std::string StudioController::propose() {
+  std::vector<Segment> all;
+  for (const ImageEntry& e : project_.images) all.insert(all.end(), e.segments.begin(), e.segments.end());
+  const LabelledSet labelled = project_.labelled();
+  ProposalParams params;
+  // Trained like `fieldlines train` trains by default, so proposals match what the CLI would make.
+  params.train = protocol_spec(Protocol::Ours).train;
+  const ProposalThresholds made = proposal_thresholds(all, labelled.segments, project_.thresholds, params);
+  std::size_t proposed = 0;
+  for (ImageEntry& e : project_.images) {
+    e.proposals.assign(e.segments.size(), Label::Unlabelled);
+    for (std::size_t i = 0; i < e.segments.size(); ++i) {
+      if (e.segments[i].label != Label::Unlabelled) continue;
+      e.proposals[i] = classify(e.segments[i], made.thresholds);
+      ++proposed;
+    }
+  }
+  proposal_thresholds_ = made.thresholds;
+  proposal_summary_ = std::to_string(proposed) + " proposals (marking " + std::string(to_string(made.marking)) +
+                      ", boundary " + std::string(to_string(made.boundary)) + ")";
+  if (!made.note.empty()) proposal_summary_ += "; " + made.note;
+  autosave();
+  return proposal_summary_;
+}
+
+Label StudioController::proposal(std::size_t segment) const {
+  if (image_count() == 0) return Label::Unlabelled;
+  const ImageEntry& e = project_.images[current_];
+  if (segment >= e.segments.size() || e.segments[segment].label != Label::Unlabelled) return Label::Unlabelled;
+  return e.proposal(segment);
+}
+
+std::size_t StudioController::accept_proposals() {
+  if (image_count() == 0) return 0;
+  std::vector<LabelEdit> edits;
+  const ImageEntry& e = project_.images[current_];
+  for (std::size_t i = 0; i < e.segments.size(); ++i)
+    if (const Label p = proposal(i); p != Label::Unlabelled) edits.push_back({{current_, i}, Label::Unlabelled, p});
+  const std::size_t accepted = edits.size();
+  if (accepted && history_.apply(project_, edits, "accept " + std::to_string(accepted) + " proposals"))
+    after_label_change();
+  // On to the next image (wrapping) that still holds something to review.
+  for (std::size_t step = 1; step <= image_count(); ++step) {
+    const std::size_t i = (current_ + step) % image_count();
+    if (progress(i).labelled < project_.images[i].segments.size()) {
+      select_image(i);
+      break;
+    }
+  }
+  return accepted;
+}
+
+std::size_t StudioController::to_review() const {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < image_count(); ++i) n += project_.images[i].segments.size() - progress(i).labelled;
+  return n;
+}
+
+double StudioController::image_uncertainty(std::size_t image) const {
+  double least = std::numeric_limits<double>::infinity();
+  if (image >= image_count()) return least;
+  const Thresholds& t = proposal_thresholds_ ? *proposal_thresholds_ : project_.thresholds;
+  const auto& segs = project_.images[image].segments;
+  for (std::size_t i = 0; i < segs.size(); ++i)
+    if (segs[i].label == Label::Unlabelled) least = std::min(least, std::abs(decision_margin(features_[image][i], t)));
+  return least;
+}
+
+std::optional<SegmentRef> StudioController::focus_most_uncertain() {
+  const Thresholds& t = proposal_thresholds_ ? *proposal_thresholds_ : project_.thresholds;
+  std::optional<SegmentRef> best;
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t img = 0; img < image_count(); ++img) {
+    const auto& segs = project_.images[img].segments;
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      if (segs[i].label != Label::Unlabelled) continue;
+      const double m = std::abs(decision_margin(features_[img][i], t));
+      if (m < least) least = m, best = SegmentRef{img, i};
+    }
+  }
+  if (!best) return best;
+  select_image(best->image);
+  set_hovered(best->segment);
+  focus_request_ = best->segment;
+  return best;
+}
+
+std::optional<std::size_t> StudioController::take_focus_request() {
+  return std::exchange(focus_request_, std::nullopt);
+}
+
+}  // namespace fieldlines::studio
