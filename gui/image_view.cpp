@@ -73,6 +73,15 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
     state.view.fit(image_size, viewport);
     state.fit_requested = false;
   }
+  if (const auto focus = controller.take_focus_request(); focus && *focus < controller.segments().size()) {
+    // Centre the view on the segment's midpoint, keeping the zoom.
+    const Segment& s = controller.segments()[*focus];
+    const Vec2 mid{0.5f * (s.x0 + s.x1) + 0.5f, 0.5f * (s.y0 + s.y1) + 0.5f};
+    const Vec2 centre{0.5f * (viewport.min.x + viewport.max.x), 0.5f * (viewport.min.y + viewport.max.y)};
+    state.view.set(state.view.scale(), centre - mid * state.view.scale());
+    state.focus = focus;
+    state.focus_image = controller.current();
+  }
 
   ImGuiIO& io = ImGui::GetIO();
   const Vec2 mouse = vec(io.MousePos);
@@ -86,8 +95,14 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
   const auto segments = controller.segments();
   const auto predictions = controller.predictions();
   // Hover: nearest segment in screen pixels (none while dragging a rectangle or panning).
-  if (hovered && !state.rect_active) {
-    controller.set_hovered(studio::nearest_segment(segments, state.view, mouse, state.pick_radius_px));
+  std::optional<std::size_t> under;
+  if (hovered && !state.rect_active) under = studio::nearest_segment(segments, state.view, mouse, state.pick_radius_px);
+  if (under) state.focus.reset();
+  const bool focus_here = state.focus && state.focus_image == controller.current() && *state.focus < segments.size();
+  if (under || (hovered && !state.rect_active && !focus_here)) {
+    controller.set_hovered(under);
+  } else if (focus_here) {
+    controller.set_hovered(state.focus);
   } else if (!ImGui::IsItemActive()) {
     controller.set_hovered(std::nullopt);
   }
@@ -126,7 +141,7 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
   if (state.show_segments) {
     for (std::size_t i = 0; i < segments.size(); ++i) {
       const auto s = studio::to_screen(segments[i], state.view);
-      auto style = studio::style_for(state.mode, segments[i].label, predictions[i]);
+      auto style = studio::style_for(state.mode, segments[i].label, predictions[i], controller.proposal(i));
       style.thickness = studio::zoomed_thickness(style.thickness, state.view.scale());
       draw_styled_line(draw, im(s.a), im(s.b), style);
     }

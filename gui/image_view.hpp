@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 // The central canvas: the current image as a texture, the segments drawn over it, and the mouse
 // gestures that become controller commands (hover, click to label, drag a rectangle, pan, zoom).
 #include <cstddef>
@@ -21,6 +22,10 @@ struct ImageViewState {
   std::size_t texture_generation = static_cast<std::size_t>(-1);
   bool rect_active = false;
   studio::Vec2 rect_start{};
+  // The segment Tab brought into view (StudioController::focus_most_uncertain): it stays the
+  // hovered one, so M/B/N label it, until the pointer hovers another segment.
+  std::optional<std::size_t> focus;
+  std::size_t focus_image = 0;
 };
 
 // Gesture map: left click = label hovered with the brush; right click = label hovered "none";

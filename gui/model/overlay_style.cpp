@@ -18,6 +18,7 @@ constexpr std::array kLabelLegend{
     LegendEntry{"boundary", {kBoundary, Stroke::Solid, 2}},
     LegendEntry{"none", {kNone, Stroke::Solid, 2}},
     LegendEntry{"unlabelled", {kUnlabelled, Stroke::Solid, 2}},
+    LegendEntry{"proposed (P), Enter accepts", {kMarking, Stroke::Dashed, 2}},
 };
 constexpr std::array kPredictionLegend{
     LegendEntry{"predicted marking", {kMarking, Stroke::Solid, 2}},
@@ -52,7 +53,9 @@ Rgba label_colour(Label label) {
   return kUnlabelled;
 }
 
-SegmentStyle style_for(OverlayMode mode, Label truth, Label predicted) {
+SegmentStyle style_for(OverlayMode mode, Label truth, Label predicted, Label proposal) {
+  if (mode != OverlayMode::Prediction && truth == Label::Unlabelled && proposal != Label::Unlabelled)
+    return {label_colour(proposal), Stroke::Dashed, 2};
   switch (mode) {
     case OverlayMode::Labels:
       return {label_colour(truth), Stroke::Solid, 2.0f};

@@ -42,8 +42,10 @@ inline constexpr float kOutlineExtra = 3;  // outline width = line width + this,
 // square root, so a 16x zoom draws 4x wider), never thinner than at 1:1.
 float zoomed_thickness(float thickness, float scale);
 
-// What a segment looks like given its human label and the thresholds' prediction.
-SegmentStyle style_for(OverlayMode mode, Label truth, Label predicted);
+// What a segment looks like given its human label, the thresholds' prediction and the review
+// loop's proposal: an unlabelled segment with a proposal is drawn dashed in the proposed class's
+// colour in the label and agreement modes, so a proposal never looks like a label.
+SegmentStyle style_for(OverlayMode mode, Label truth, Label predicted, Label proposal = Label::Unlabelled);
 
 struct LegendEntry {
   std::string_view text;

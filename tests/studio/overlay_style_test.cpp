@@ -43,3 +43,20 @@ TEST(OverlayStyle, LinesGrowWithTheZoomButNeverShrink) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(OverlayStyle, AProposalIsDashedInItsClassColourAndNeverLooksLikeALabel) {
+  const fs::SegmentStyle proposed = fs::style_for(fs::OverlayMode::Labels, Label::Unlabelled, Label::None, Label::Marking);
+  const fs::SegmentStyle labelled = fs::style_for(fs::OverlayMode::Labels, Label::Marking, Label::None, Label::Marking);
+  EXPECT_EQ(proposed.colour, fs::label_colour(Label::Marking));
+  EXPECT_EQ(proposed.stroke, fs::Stroke::Dashed);
+  EXPECT_EQ(labelled.stroke, fs::Stroke::Solid);
+  // Once labelled, the proposal no longer shows; the prediction mode ignores proposals.
+  EXPECT_EQ(fs::style_for(fs::OverlayMode::Prediction, Label::Unlabelled, Label::Boundary, Label::Marking).colour,
+            fs::label_colour(Label::Boundary));
+  EXPECT_EQ(fs::style_for(fs::OverlayMode::Labels, Label::Unlabelled, Label::None).colour,
+            fs::label_colour(Label::Unlabelled));
+}
+
+}  // namespace
