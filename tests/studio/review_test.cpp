@@ -8,7 +8,7 @@
 #include "fieldlines/data/project.hpp"
 #include "fixtures.hpp"
 #include "gui/model/studio_controller.hpp"
-#include "known_features.hpp"
+#include "tests/known_features.hpp"
 
 namespace fs = fieldlines::studio;
 using fieldlines::Label;
