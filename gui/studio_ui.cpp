@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "gui/model/shortcuts.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
@@ -22,38 +23,56 @@ const char* panel_name(Panel panel) {
   return "?";
 }
 
+// The table's key codes are GLFW's, so key presses pass through unchanged.
+static_assert(static_cast<int>(studio::Key::M) == GLFW_KEY_M && static_cast<int>(studio::Key::Z) == GLFW_KEY_Z);
+static_assert(static_cast<int>(studio::Key::B) == GLFW_KEY_B && static_cast<int>(studio::Key::Y) == GLFW_KEY_Y);
+static_assert(static_cast<int>(studio::Key::Left) == GLFW_KEY_LEFT && static_cast<int>(studio::Key::Right) == GLFW_KEY_RIGHT);
+static_assert(static_cast<int>(studio::Key::F1) == GLFW_KEY_F1 && static_cast<int>(studio::Key::F6) == GLFW_KEY_F6);
+static_assert(static_cast<int>(Panel::Count) == 6, "the shortcut table's tabs are F1..F6");
+
 void handle_shortcuts(studio::StudioController& controller, UiState& ui, std::span<const KeyPress> keys) {
   if (ImGui::GetIO().WantTextInput) return;
   for (const KeyPress& k : keys) {
-    const bool ctrl = (k.mods & GLFW_MOD_CONTROL) != 0, shift = (k.mods & GLFW_MOD_SHIFT) != 0;
-    if (k.repeat && k.key != GLFW_KEY_LEFT && k.key != GLFW_KEY_RIGHT) continue;  // only arrows auto-repeat
-    if (ctrl) {
-      if (k.key == GLFW_KEY_Z) shift ? controller.redo() : controller.undo();
-      if (k.key == GLFW_KEY_Y) controller.redo();
-      if (k.key == GLFW_KEY_Q) ui.quit_requested = true;
-      if (k.key == GLFW_KEY_T) {
+    const studio::Chord pressed{static_cast<studio::Key>(k.key), (k.mods & GLFW_MOD_CONTROL) != 0,
+                                (k.mods & GLFW_MOD_SHIFT) != 0};
+    const studio::Shortcut* shortcut = studio::find_shortcut(pressed, k.repeat);
+    if (!shortcut) continue;
+    switch (shortcut->action) {
+      case studio::Action::LabelMarking: controller.label_hovered(Label::Marking); break;
+      case studio::Action::LabelBoundary: controller.label_hovered(Label::Boundary); break;
+      case studio::Action::LabelNone: controller.label_hovered(Label::None); break;
+      case studio::Action::LabelClear: controller.label_hovered(Label::Unlabelled); break;
+      case studio::Action::Fit: ui.image_view.fit_requested = true; break;
+      case studio::Action::PreviousImage: controller.previous_image(); break;
+      case studio::Action::NextImage: controller.next_image(); break;
+      case studio::Action::NextImageWithErrors: controller.next_image_with_errors(); break;
+      case studio::Action::Undo: controller.undo(); break;
+      case studio::Action::Redo: controller.redo(); break;
+      case studio::Action::ToggleTraining:
         controller.training().running() ? controller.cancel_training() : controller.start_training(ui.train_params);
         ui.requested_panel = Panel::Train;
         ui.panel_request_pending = true;
-      }
-      continue;
-    }
-    switch (k.key) {
-      case GLFW_KEY_M: controller.label_hovered(Label::Marking); break;
-      case GLFW_KEY_B: controller.label_hovered(Label::Boundary); break;
-      case GLFW_KEY_N: controller.label_hovered(Label::None); break;
-      case GLFW_KEY_C: controller.label_hovered(Label::Unlabelled); break;
-      case GLFW_KEY_RIGHT: controller.next_image(); break;
-      case GLFW_KEY_LEFT: controller.previous_image(); break;
-      case GLFW_KEY_E: controller.next_image_with_errors(); break;
-      case GLFW_KEY_F: ui.image_view.fit_requested = true; break;
-      default:
-        if (k.key >= GLFW_KEY_F1 && k.key < GLFW_KEY_F1 + static_cast<int>(Panel::Count)) {
-          ui.requested_panel = static_cast<Panel>(k.key - GLFW_KEY_F1);
-          ui.panel_request_pending = true;
-        }
+        break;
+      case studio::Action::ShowTab:
+        ui.requested_panel = static_cast<Panel>(shortcut->tab);
+        ui.panel_request_pending = true;
+        break;
+      case studio::Action::Quit: ui.quit_requested = true; break;
+      case studio::Action::Pointer: break;  // mouse inputs are the image view's
     }
   }
+}
+
+void draw_shortcut_help() {
+  if (!ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_SizingFixedFit)) return;
+  for (const studio::Shortcut& s : studio::shortcuts()) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(studio::input_name(s).c_str());
+    ImGui::TableNextColumn();
+    ImGui::TextDisabled("%.*s", static_cast<int>(s.description.size()), s.description.data());
+  }
+  ImGui::EndTable();
 }
 
 namespace {

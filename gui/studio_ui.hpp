@@ -49,9 +49,10 @@ void draw_studio(studio::StudioController& controller, UiState& ui, std::span<co
 // progress and a Cancel button (which asks to quit, as closing the window does).
 void draw_video_import(const studio::VideoImport& import, UiState& ui);
 
-// Keyboard shortcuts (ignored while a text field has focus): M/B/N/C label the hovered segment
-// marking/boundary/none/clear, Left/Right previous/next image, E next image with errors, F fit,
-// Ctrl+Z undo, Ctrl+Shift+Z or Ctrl+Y redo, Ctrl+T start/stop training, F1..F6 panels, Ctrl+Q quit.
+// Runs the shortcuts of gui/model/shortcuts.hpp's table for these key presses (none while a text
+// field has focus).
 void handle_shortcuts(studio::StudioController& controller, UiState& ui, std::span<const KeyPress> keys);
+// The in-app help: every row of the same table.
+void draw_shortcut_help();
 
 }  // namespace fieldlines::gui

@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "gui/model/shortcuts.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
@@ -14,7 +15,8 @@ void draw_images_panel(studio::StudioController& controller, UiState& ui) {
   ImGui::SameLine();
   if (ImGui::Button("Next >")) controller.next_image();
   ImGui::SameLine();
-  if (ImGui::Button("Next with errors (E)")) controller.next_image_with_errors();
+  const std::string next_with_errors = "Next with errors (" + studio::key_for(studio::Action::NextImageWithErrors) + ")";
+  if (ImGui::Button(next_with_errors.c_str())) controller.next_image_with_errors();
   ImGui::Combo("filter", &ui.image_filter, "all\0not fully labelled\0with errors\0test split\0");
   ImGui::Text("%zu labelled segments in %zu images", controller.labelled_total(), controller.image_count());
   if (!ui.recent_projects.empty() && ImGui::CollapsingHeader("Recent projects")) {

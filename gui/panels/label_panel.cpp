@@ -4,9 +4,18 @@
 #include <imgui.h>
 
 #include "gui/image_view.hpp"
+#include "gui/model/shortcuts.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
+
+namespace {
+// "Undo (Ctrl+Z)": the key from the shortcut table, so a caption never names a stale key.
+std::string captioned(const char* text, studio::Action action) {
+  const std::string key = studio::key_for(action);
+  return key.empty() ? text : std::string(text) + " (" + key + ")";
+}
+}  // namespace
 
 void draw_legend(studio::OverlayMode mode) {
   for (const studio::LegendEntry& entry : studio::legend(mode)) {
@@ -22,11 +31,12 @@ void draw_legend(studio::OverlayMode mode) {
 void draw_label_panel(studio::StudioController& controller, UiState& ui) {
   ImGui::TextUnformatted("Left click / rectangle labels as:");
   int brush = static_cast<int>(ui.image_view.brush);
-  ImGui::RadioButton("marking (M)", &brush, static_cast<int>(Label::Marking));
+  ImGui::RadioButton(captioned("marking", studio::Action::LabelMarking).c_str(), &brush, static_cast<int>(Label::Marking));
   ImGui::SameLine();
-  ImGui::RadioButton("boundary (B)", &brush, static_cast<int>(Label::Boundary));
+  ImGui::RadioButton(captioned("boundary", studio::Action::LabelBoundary).c_str(), &brush,
+                     static_cast<int>(Label::Boundary));
   ImGui::SameLine();
-  ImGui::RadioButton("none (N)", &brush, static_cast<int>(Label::None));
+  ImGui::RadioButton(captioned("none", studio::Action::LabelNone).c_str(), &brush, static_cast<int>(Label::None));
   ui.image_view.brush = static_cast<Label>(brush);
 
   ImGui::Separator();
@@ -45,21 +55,18 @@ void draw_label_panel(studio::StudioController& controller, UiState& ui) {
   if (ImGui::Button("Label the rest as none")) controller.label_rest_as_none();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("every unlabelled segment of this image becomes 'none'");
   ImGui::BeginDisabled(!controller.can_undo());
-  if (ImGui::Button("Undo (Ctrl+Z)")) controller.undo();
+  if (ImGui::Button(captioned("Undo", studio::Action::Undo).c_str())) controller.undo();
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(!controller.can_redo());
-  if (ImGui::Button("Redo (Ctrl+Shift+Z)")) controller.redo();
+  if (ImGui::Button(captioned("Redo", studio::Action::Redo).c_str())) controller.redo();
   ImGui::EndDisabled();
-  if (ImGui::Button("Fit to window (F)")) ui.image_view.fit_requested = true;
+  if (ImGui::Button(captioned("Fit to window", studio::Action::Fit).c_str())) ui.image_view.fit_requested = true;
 
   ImGui::Separator();
-  ImGui::TextDisabled("Hover a segment, then: M marking, B boundary,");
-  ImGui::TextDisabled("N none, C clear. Right click: none.");
-  ImGui::TextDisabled("Left drag: label a rectangle. Right/middle drag: pan.");
-  ImGui::TextDisabled("Wheel: zoom at cursor. Left/Right: prev/next image.");
-  ImGui::TextDisabled("E: next image with errors. F1..F6: panels.");
-  ImGui::TextDisabled("Ctrl+Z undo, Ctrl+Shift+Z redo, Ctrl+T train.");
+  if (ImGui::CollapsingHeader("Keys and mouse (hover a segment first)", ImGuiTreeNodeFlags_DefaultOpen)) {
+    draw_shortcut_help();
+  }
 }
 
 }  // namespace fieldlines::gui

@@ -1,0 +1,56 @@
+#pragma once
+// The studio's one table of inputs: every keyboard shortcut (key, action, description) and the
+// mouse inputs of the image view. The key handling looks keys up here, the in-app help draws
+// this table, and a test checks that the README's and docs/studio.md's tables list exactly
+// these rows, so none of them can drift.
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace fieldlines::studio {
+
+// Key codes are GLFW's (glfw3.h: printable keys are their upper-case ASCII), so the window
+// passes its codes through unchanged; gui/studio_ui.cpp checks them against glfw3.h.
+enum class Key : int {
+  None = 0,  // a mouse input: handled by the image view, listed for the help
+  B = 'B', C = 'C', E = 'E', F = 'F', M = 'M', N = 'N', Q = 'Q', T = 'T', Y = 'Y', Z = 'Z',
+  Right = 262, Left = 263,
+  F1 = 290, F2, F3, F4, F5, F6,
+};
+
+struct Chord {
+  Key key = Key::None;
+  bool ctrl = false, shift = false;
+  bool operator==(const Chord&) const = default;
+};
+
+enum class Action {
+  LabelMarking, LabelBoundary, LabelNone, LabelClear,  // the hovered segment
+  Fit, PreviousImage, NextImage, NextImageWithErrors,
+  Undo, Redo, ToggleTraining, ShowTab, Quit,
+  Pointer,  // a mouse input (no key)
+};
+
+struct Shortcut {
+  Chord chord;
+  Action action;
+  std::string_view description;
+  std::string_view pointer = {};  // the mouse input's name, for Action::Pointer
+  int tab = -1;                   // for ShowTab: 0 Images .. 5 Export
+  bool repeats = false;           // acts on auto-repeat while held (navigation only)
+};
+
+// Every input, in the order the help and the docs list them.
+std::span<const Shortcut> shortcuts();
+
+// The shortcut a key press triggers, if any. Shift only matters where a chord names it (so
+// Shift+M still labels marking, Ctrl+Shift+Z is redo); repeats of other keys are ignored.
+const Shortcut* find_shortcut(Chord pressed, bool repeat = false);
+
+// How the help and the docs write the input: "M", "Ctrl+Shift+Z", "Left", "F1", "left click".
+std::string input_name(const Shortcut& shortcut);
+// The first key of `action` (e.g. "Ctrl+Z" for Undo), for button captions; empty when none.
+std::string key_for(Action action);
+
+}  // namespace fieldlines::studio

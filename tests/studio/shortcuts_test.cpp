@@ -1,0 +1,109 @@
+// The one shortcut table: lookups as the window makes them, and the README's and docs/studio.md's
+// tables must list exactly its rows, in its order (so the docs cannot drift from the keys).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gui/model/shortcuts.hpp"
+
+namespace fs = fieldlines::studio;
+using fs::Action;
+using fs::Chord;
+using fs::Key;
+
+namespace {
+
+using Row = std::pair<std::string, std::string>;  // input, description
+
+std::vector<Row> table_rows() {
+  std::vector<Row> rows;
+  for (const fs::Shortcut& s : fs::shortcuts()) rows.emplace_back(fs::input_name(s), std::string(s.description));
+  return rows;
+}
+
+std::string trim(std::string s) {
+  const auto b = s.find_first_not_of(' '), e = s.find_last_not_of(' ');
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+// The rows of the first "| Input | Action |" table after the line starting with `heading`, with
+// the input's backticks removed.
+std::vector<Row> markdown_rows(const std::filesystem::path& file, const std::string& heading) {
+  std::ifstream in(file);
+  EXPECT_TRUE(in) << file;
+  std::string line;
+  while (std::getline(in, line) && line.rfind(heading, 0) != 0) {
+  }
+  while (std::getline(in, line) && line != "| Input | Action |") {
+  }
+  std::vector<Row> rows;
+  while (std::getline(in, line) && line.rfind('|', 0) == 0) {
+    if (line.rfind("|---", 0) == 0) continue;
+    const auto mid = line.find(" | ");
+    if (mid == std::string::npos || line.size() < 4) {
+      ADD_FAILURE() << file << ": not a two-column row: " << line;
+      continue;
+    }
+    std::string input = trim(line.substr(1, mid - 1));
+    std::erase(input, '`');
+    rows.emplace_back(input, trim(line.substr(mid + 3, line.size() - mid - 4)));
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST(Shortcuts, TheReadmeAndTheStudioDocListExactlyTheTable) {
+  const std::filesystem::path root = FIELDLINES_SOURCE_DIR;
+  const std::vector<Row> expected = table_rows();
+  ASSERT_FALSE(expected.empty());
+  EXPECT_EQ(markdown_rows(root / "README.md", "## The studio"), expected);
+  EXPECT_EQ(markdown_rows(root / "docs/studio.md", "## Labelling"), expected);
+}
+
+TEST(Shortcuts, EveryKeyIsBoundOnceAndEveryActionHasAnInput) {
+  std::set<std::pair<int, int>> chords;  // key, ctrl*2 + shift
+  std::set<Action> actions;
+  for (const fs::Shortcut& s : fs::shortcuts()) {
+    actions.insert(s.action);
+    EXPECT_FALSE(s.description.empty());
+    if (s.chord.key == Key::None) {
+      EXPECT_EQ(s.action, Action::Pointer);
+      EXPECT_FALSE(s.pointer.empty());
+      continue;
+    }
+    EXPECT_TRUE(chords.insert({static_cast<int>(s.chord.key), s.chord.ctrl * 2 + s.chord.shift}).second)
+        << fs::input_name(s) << " is bound twice";
+  }
+  for (int a = 0; a <= static_cast<int>(Action::Pointer); ++a) EXPECT_TRUE(actions.count(static_cast<Action>(a))) << a;
+}
+
+TEST(Shortcuts, LookupAsTheWindowSeesKeys) {
+  const auto action_of = [](Chord c, bool repeat = false) {
+    const fs::Shortcut* s = fs::find_shortcut(c, repeat);
+    return s ? std::optional<Action>(s->action) : std::nullopt;
+  };
+  EXPECT_EQ(action_of({Key::M}), Action::LabelMarking);
+  EXPECT_EQ(action_of({Key::M, false, true}), Action::LabelMarking);  // Shift not named: ignored
+  EXPECT_EQ(action_of({Key::M, true}), std::nullopt);                 // Ctrl+M is nothing
+  EXPECT_EQ(action_of({Key::Z, true}), Action::Undo);
+  EXPECT_EQ(action_of({Key::Z, true, true}), Action::Redo);
+  EXPECT_EQ(action_of({Key::Y, true}), Action::Redo);
+  EXPECT_EQ(action_of({Key::Z}), std::nullopt);
+  EXPECT_EQ(action_of({Key::Right}, true), Action::NextImage);  // arrows repeat while held
+  EXPECT_EQ(action_of({Key::M}, true), std::nullopt);           // a held M labels once
+  EXPECT_EQ(action_of({Key::None}), std::nullopt);
+  const fs::Shortcut* tab = fs::find_shortcut({Key::F4});
+  ASSERT_NE(tab, nullptr);
+  EXPECT_EQ(tab->action, Action::ShowTab);
+  EXPECT_EQ(tab->tab, 3);
+  EXPECT_EQ(fs::key_for(Action::Redo), "Ctrl+Shift+Z");
+  EXPECT_EQ(fs::key_for(Action::NextImageWithErrors), "E");
+  EXPECT_EQ(fs::key_for(Action::Pointer), "");
+}
