@@ -1,6 +1,7 @@
 #include "gui/studio_ui.hpp"
 
 #include <cstdio>
+#include <string>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -28,6 +29,8 @@ static_assert(static_cast<int>(studio::Key::M) == GLFW_KEY_M && static_cast<int>
 static_assert(static_cast<int>(studio::Key::B) == GLFW_KEY_B && static_cast<int>(studio::Key::Y) == GLFW_KEY_Y);
 static_assert(static_cast<int>(studio::Key::Left) == GLFW_KEY_LEFT && static_cast<int>(studio::Key::Right) == GLFW_KEY_RIGHT);
 static_assert(static_cast<int>(studio::Key::F1) == GLFW_KEY_F1 && static_cast<int>(studio::Key::F6) == GLFW_KEY_F6);
+static_assert(static_cast<int>(studio::Key::Enter) == GLFW_KEY_ENTER && static_cast<int>(studio::Key::Tab) == GLFW_KEY_TAB);
+static_assert(static_cast<int>(studio::Key::P) == GLFW_KEY_P);
 static_assert(static_cast<int>(Panel::Count) == 6, "the shortcut table's tabs are F1..F6");
 
 void handle_shortcuts(studio::StudioController& controller, UiState& ui, std::span<const KeyPress> keys) {
@@ -46,6 +49,15 @@ void handle_shortcuts(studio::StudioController& controller, UiState& ui, std::sp
       case studio::Action::PreviousImage: controller.previous_image(); break;
       case studio::Action::NextImage: controller.next_image(); break;
       case studio::Action::NextImageWithErrors: controller.next_image_with_errors(); break;
+      case studio::Action::Propose: ui.status_message = controller.propose(); break;
+      case studio::Action::AcceptProposals: {
+        const std::size_t n = controller.accept_proposals();
+        ui.status_message = "accepted " + std::to_string(n) + " proposals";
+        break;
+      }
+      case studio::Action::FocusUncertain:
+        if (!controller.focus_most_uncertain()) ui.status_message = "nothing left to review";
+        break;
       case studio::Action::Undo: controller.undo(); break;
       case studio::Action::Redo: controller.redo(); break;
       case studio::Action::ToggleTraining:
@@ -81,10 +93,10 @@ void draw_status_bar(const studio::StudioController& controller, const UiState& 
   const auto segments = controller.segments();
   std::size_t labelled = 0;
   for (const Segment& s : segments) labelled += s.label != Label::Unlabelled;
-  ImGui::Text("image %zu/%zu  %s  |  %zu/%zu labelled  |  zoom %.0f%%  |  frame %.1f ms",
+  ImGui::Text("image %zu/%zu  %s  |  %zu/%zu labelled  |  %zu to review  |  zoom %.0f%%  |  frame %.1f ms",
               controller.image_count() ? controller.current() + 1 : 0, controller.image_count(),
               controller.image_count() ? controller.project().images[controller.current()].path.c_str() : "-",
-              labelled, segments.size(), ui.image_view.view.scale() * 100,
+              labelled, segments.size(), controller.to_review(), ui.image_view.view.scale() * 100,
               ui.frame_stats ? ui.frame_stats->median_ms() : 0.0);
   if (!ui.status_message.empty()) {
     ImGui::SameLine();

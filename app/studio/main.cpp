@@ -102,6 +102,8 @@ class StateWriter {
                                {"training", c.training().running()},
                                {"trained", c.training().outcome().has_value()},
                                {"detection", c.detection_report().summary()},
+                               {"detecting", c.detection().running()},
+                               {"to_review", c.to_review()},
                                {"image_error", c.image_error()}};
     std::string text = state.dump();
     if (text == last_) return;

@@ -23,6 +23,9 @@ constexpr std::array kShortcuts{
     Shortcut{key(Key::Left), Action::PreviousImage, "previous image", {}, -1, true},
     Shortcut{key(Key::Right), Action::NextImage, "next image", {}, -1, true},
     Shortcut{key(Key::E), Action::NextImageWithErrors, "next image where the thresholds disagree with a label"},
+    Shortcut{key(Key::P), Action::Propose, "propose a label for every unlabelled segment (label-free, then trained on your labels)"},
+    Shortcut{key(Key::Enter), Action::AcceptProposals, "accept this image's proposals (one undo step) and go to the next image to review"},
+    Shortcut{key(Key::Tab), Action::FocusUncertain, "show the project's least certain unlabelled segment"},
     Shortcut{ctrl(Key::Z), Action::Undo, "undo (one step per user action)"},
     Shortcut{ctrl(Key::Z, true), Action::Redo, "redo"},
     Shortcut{ctrl(Key::Y), Action::Redo, "redo"},
@@ -41,10 +44,17 @@ std::string key_name(Key k) {
     case Key::None: return {};
     case Key::Left: return "Left";
     case Key::Right: return "Right";
+    case Key::Enter: return "Enter";
+    case Key::Tab: return "Tab";
     default: break;
   }
   const int code = static_cast<int>(k);
-  if (code >= static_cast<int>(Key::F1)) return "F" + std::to_string(code - static_cast<int>(Key::F1) + 1);
+  if (code >= static_cast<int>(Key::F1)) {
+    // Appended, not "F" + ...: GCC 12 warns falsely (-Wrestrict) on that concatenation.
+    std::string name = "F";
+    name += std::to_string(code - static_cast<int>(Key::F1) + 1);
+    return name;
+  }
   return std::string(1, static_cast<char>(code));
 }
 

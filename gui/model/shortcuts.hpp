@@ -14,8 +14,8 @@ namespace fieldlines::studio {
 // passes its codes through unchanged; gui/studio_ui.cpp checks them against glfw3.h.
 enum class Key : int {
   None = 0,  // a mouse input: handled by the image view, listed for the help
-  B = 'B', C = 'C', E = 'E', F = 'F', M = 'M', N = 'N', Q = 'Q', T = 'T', Y = 'Y', Z = 'Z',
-  Right = 262, Left = 263,
+  B = 'B', C = 'C', E = 'E', F = 'F', M = 'M', N = 'N', P = 'P', Q = 'Q', T = 'T', Y = 'Y', Z = 'Z',
+  Enter = 257, Tab = 258, Right = 262, Left = 263,
   F1 = 290, F2, F3, F4, F5, F6,
 };
 
@@ -28,6 +28,7 @@ struct Chord {
 enum class Action {
   LabelMarking, LabelBoundary, LabelNone, LabelClear,  // the hovered segment
   Fit, PreviousImage, NextImage, NextImageWithErrors,
+  Propose, AcceptProposals, FocusUncertain,  // the review loop
   Undo, Redo, ToggleTraining, ShowTab, Quit,
   Pointer,  // a mouse input (no key)
 };
