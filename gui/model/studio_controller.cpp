@@ -1,3 +1,5 @@
+// Over ~400 lines: the controller is the studio's one owner of the project and its caches
+// (features, predictions, split, counts); the review loop already lives apart (review.cpp).
 #include "gui/model/studio_controller.hpp"
 
 #include "fieldlines/data/reference_csv.hpp"

@@ -1,3 +1,5 @@
+// Over ~400 lines on purpose: the exact polish (Polisher) and train() share the threshold
+// encoding (Dim, ref, to_thresholds) and are one algorithm; split, each half would need the other.
 #include "fieldlines/train/training.hpp"
 
 #include <algorithm>
