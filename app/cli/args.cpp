@@ -64,12 +64,6 @@ double ParsedArgs::double_or(const std::string& name, double fallback, double mi
   return v ? parse_double(*v, name, min, max) : fallback;
 }
 
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 int parse_int(std::string_view text, std::string_view what, int min, int max) {
   int value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);

@@ -33,9 +33,6 @@ class ParsedArgs {
   std::vector<std::string> positionals_;
 };
 
-// A file name's extension in lower case (".csv" for "A.CSV"), empty when it has none.
-std::string lower_extension(const std::filesystem::path& path);
-
 int parse_int(std::string_view text, std::string_view what, int min, int max);
 double parse_double(std::string_view text, std::string_view what, double min, double max);
 // "LO:HI" with min <= LO <= HI <= max.

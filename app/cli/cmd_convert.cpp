@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/cli/args.hpp"
+#include "fieldlines/data/image_io.hpp"
 #include "app/cli/commands.hpp"
 #include "fieldlines/data/data_file.hpp"
 #include "fieldlines/data/project.hpp"

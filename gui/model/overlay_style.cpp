@@ -1,5 +1,7 @@
 #include "gui/model/overlay_style.hpp"
 
+#include "fieldlines/detect/enum_names.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -34,14 +36,9 @@ constexpr std::array kAgreementLegend{
 };
 }  // namespace
 
-std::string_view to_string(OverlayMode mode) {
-  switch (mode) {
-    case OverlayMode::Labels: return "labels";
-    case OverlayMode::Prediction: return "prediction";
-    case OverlayMode::Agreement: return "agreement";
-  }
-  return "?";
-}
+constexpr EnumNames<OverlayMode, 3> kModeNames{
+    {{{OverlayMode::Labels, "labels"}, {OverlayMode::Prediction, "prediction"}, {OverlayMode::Agreement, "agreement"}}}};
+std::string_view to_string(OverlayMode mode) { return kModeNames.name(mode); }
 
 Rgba label_colour(Label label) {
   switch (label) {

@@ -17,13 +17,6 @@
 
 namespace fieldlines::studio {
 
-bool has_video_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  constexpr std::array kVideo{".mp4", ".avi", ".mkv", ".mov", ".webm", ".m4v"};
-  return std::find(kVideo.begin(), kVideo.end(), ext) != kVideo.end();
-}
-
 std::filesystem::path frames_folder_for(const std::filesystem::path& video, int every) {
   return video.parent_path() / (video.stem().string() + "-every" + std::to_string(every));
 }

@@ -4,12 +4,13 @@
 #include <filesystem>
 #include <optional>
 
+#include "fieldlines/data/video_io.hpp"
 #include "gui/model/job.hpp"
 
 namespace fieldlines::studio {
 
-// True for the file extensions treated as video (mp4, avi, mkv, mov, webm, m4v), case-insensitive.
-bool has_video_extension(const std::filesystem::path& path);
+// Which files are videos: the one rule of fieldlines/data/video_io.hpp, shared with the CLI.
+using fieldlines::has_video_extension;
 
 // <video folder>/<video stem>-every<N>: another --every gets its own folder (and labels) rather
 // than silently reusing frames taken at a different rate.

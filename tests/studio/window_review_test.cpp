@@ -12,7 +12,7 @@
 
 #include "fieldlines/data/project.hpp"
 #include "gui/model/open_project.hpp"
-#include "shared_data.hpp"
+#include "tests/shared_data.hpp"
 #include "x_session.hpp"
 
 namespace fs = std::filesystem;

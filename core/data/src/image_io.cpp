@@ -155,13 +155,6 @@ std::vector<unsigned char> read_bytes(const fs::path& path, std::size_t limit) {
   return bytes;
 }
 
-std::string lower_extension(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 }  // namespace
 
 std::string describe_type(int cv_type) {
@@ -223,6 +216,13 @@ cv::Mat load_image(const fs::path& path, const ImageLoadParams& params) {
     fail(path, "unsupported pixel type " + describe_type(image.type()) +
                    " (expected 8- or 16-bit unsigned with 1, 3 or 4 channels)");
   return image;
+}
+
+std::string lower_extension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
 }
 
 bool has_image_extension(const fs::path& path) {

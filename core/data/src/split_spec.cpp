@@ -1,17 +1,15 @@
 #include "fieldlines/data/split_spec.hpp"
 
+#include "fieldlines/detect/enum_names.hpp"
 #include "fieldlines/detect/error.hpp"
 
 namespace fieldlines {
 
-std::string_view to_string(SplitMode mode) { return mode == SplitMode::ByRow ? "row" : "image"; }
+// Namespace-scope constexpr: internal linkage.
+constexpr EnumNames<SplitMode, 2> kNames{{{{SplitMode::ByImage, "image"}, {SplitMode::ByRow, "row"}}}};
 
-bool parse_split_mode(std::string_view text, SplitMode& out) {
-  if (text == "row") out = SplitMode::ByRow;
-  else if (text == "image") out = SplitMode::ByImage;
-  else return false;
-  return true;
-}
+std::string_view to_string(SplitMode mode) { return kNames.name(mode); }
+bool parse_split_mode(std::string_view text, SplitMode& out) { return kNames.parse(text, out); }
 
 nlohmann::json split_spec_to_json(const SplitSpec& spec) {
   return {{"mode", to_string(spec.mode)}, {"train_fraction", spec.train_fraction}, {"seed", spec.seed}};

@@ -1,25 +1,16 @@
 #include "fieldlines/detect/segment.hpp"
 
+#include "fieldlines/detect/enum_names.hpp"
+
 namespace fieldlines {
 
-std::string_view to_string(Label label) {
-  switch (label) {
-    case Label::Marking: return "marking";
-    case Label::Boundary: return "boundary";
-    case Label::None: return "none";
-    case Label::Unlabelled: break;
-  }
-  return "unlabelled";
-}
+// Namespace-scope constexpr: internal linkage.
+constexpr EnumNames<Label, 4> kNames{{{{Label::Marking, "marking"},
+                                       {Label::Boundary, "boundary"},
+                                       {Label::None, "none"},
+                                       {Label::Unlabelled, "unlabelled"}}}};
 
-bool parse_label(std::string_view text, Label& out) {
-  for (const Label l : {Label::Marking, Label::Boundary, Label::None, Label::Unlabelled}) {
-    if (text == to_string(l)) {
-      out = l;
-      return true;
-    }
-  }
-  return false;
-}
+std::string_view to_string(Label label) { return kNames.name(label); }
+bool parse_label(std::string_view text, Label& out) { return kNames.parse(text, out); }
 
 }  // namespace fieldlines

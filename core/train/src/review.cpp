@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "fieldlines/detect/enum_names.hpp"
 #include "fieldlines/train/calibrate.hpp"
 
 namespace fieldlines {
@@ -30,14 +31,9 @@ std::size_t count(std::span<const Segment> s, Label l) {
 
 }  // namespace
 
-std::string_view to_string(ProposalSource source) {
-  switch (source) {
-    case ProposalSource::LabelFree: return "label-free";
-    case ProposalSource::Trained: return "trained";
-    case ProposalSource::Start: break;
-  }
-  return "start";
-}
+constexpr EnumNames<ProposalSource, 3> kSourceNames{
+    {{{ProposalSource::LabelFree, "label-free"}, {ProposalSource::Trained, "trained"}, {ProposalSource::Start, "start"}}}};
+std::string_view to_string(ProposalSource source) { return kSourceNames.name(source); }
 
 ProposalThresholds proposal_thresholds(std::span<const Segment> all, std::span<const Segment> labelled,
                                        const Thresholds& start, const ProposalParams& params, std::stop_token stop) {

@@ -9,6 +9,7 @@
 #include <numeric>
 #include <thread>
 
+#include "fieldlines/detect/enum_names.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/train/feature_table.hpp"
 
@@ -252,20 +253,12 @@ class Polisher {
 
 }  // namespace
 
-std::string_view to_string(TrainClass c) {
-  switch (c) {
-    case TrainClass::Marking: return "marking";
-    case TrainClass::Boundary: return "boundary";
-    case TrainClass::Both: break;
-  }
-  return "both";
-}
+// Namespace-scope constexpr: internal linkage.
+constexpr EnumNames<TrainClass, 3> kClassNames{
+    {{{TrainClass::Marking, "marking"}, {TrainClass::Boundary, "boundary"}, {TrainClass::Both, "both"}}}};
 
-bool parse_train_class(std::string_view text, TrainClass& out) {
-  for (const TrainClass c : {TrainClass::Marking, TrainClass::Boundary, TrainClass::Both})
-    if (text == to_string(c)) return out = c, true;
-  return false;
-}
+std::string_view to_string(TrainClass c) { return kClassNames.name(c); }
+bool parse_train_class(std::string_view text, TrainClass& out) { return kClassNames.parse(text, out); }
 
 double Objective::score(const ClassCounts& c) const {
   switch (kind) {

@@ -35,6 +35,10 @@ cv::Mat load_image(const std::filesystem::path& path, const ImageLoadParams& par
 // nullopt for other formats or a header too damaged to read.
 std::optional<cv::Size> probe_image_size(const std::filesystem::path& path);
 
+// A file name's extension in lower case (".png" for "A.PNG"), empty when it has none: the one
+// rule by which every tool tells file kinds apart.
+std::string lower_extension(const std::filesystem::path& path);
+
 // True for the extensions load_image is meant for (png, jpg, jpeg, bmp, tif, tiff, webp, ppm,
 // pgm, pnm), case-insensitive.
 bool has_image_extension(const std::filesystem::path& path);

@@ -35,7 +35,7 @@ struct ImageEntry {
   double detect_ms = 0;           // time the detector took on this image
   // Machine-proposed labels, never counted as labels: empty, or one per segment (Unlabelled =
   // no proposal). Accepting one makes it the segment's label; re-detection drops them.
-  std::vector<Label> proposals;
+  std::vector<Label> proposals{};
 
   // The proposal for segment i (Unlabelled when there is none).
   Label proposal(std::size_t i) const { return i < proposals.size() ? proposals[i] : Label::Unlabelled; }

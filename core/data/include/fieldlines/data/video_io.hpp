@@ -8,19 +8,19 @@
 // the caller's error message says what matters.
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <filesystem>
 #include <string>
 
 #include <opencv2/core/utils/logger.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "fieldlines/data/image_io.hpp"
+
 namespace fieldlines {
 
 // True for the file extensions treated as video (mp4, avi, mkv, mov, webm, m4v), case-insensitive.
 inline bool has_video_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string ext = lower_extension(path);
   constexpr std::array kVideo{".mp4", ".avi", ".mkv", ".mov", ".webm", ".m4v"};
   return std::find(kVideo.begin(), kVideo.end(), ext) != kVideo.end();
 }
