@@ -105,9 +105,11 @@ Inputs gather(const std::vector<std::string>& paths, const ThresholdsFile& confi
   LineDetector detector(config.detector, config.thresholds);
   std::vector<std::string> image_paths;
   for (const std::string& p : paths) {
-    if (fs::is_directory(p) || !(is_data_file(p) || has_video_extension(p))) image_paths.push_back(p);
+    // Images by name first: telling a CSV by its header would read every image once more.
+    if (fs::is_directory(p) || has_image_extension(p)) image_paths.push_back(p);
     else if (has_video_extension(p)) add_video(in, detector, p, every, quiet);
-    else add_data_file(in, p);
+    else if (is_data_file(p)) add_data_file(in, p);
+    else image_paths.push_back(p);  // the image loader names what is wrong with it
   }
   const ImageInputs images = expand_image_inputs(image_paths);
   Progress progress("calibrate", images.images.size(), stderr,
@@ -126,16 +128,6 @@ Inputs gather(const std::vector<std::string>& paths, const ThresholdsFile& confi
     progress.advance();
   }
   return in;
-}
-
-nlohmann::json class_json(const ClassCalibration& c) {
-  nlohmann::json j = {{"achromatic_deg", c.achromatic_deg}, {"mean_deg", c.mean_deg},
-                      {"sd_deg", c.sd_deg}, {"achromatic_scale_deg", c.achromatic_scale_deg},
-                      {"class_mass", c.class_mass}, {"separation", c.separation},
-                      {"fit_rows", c.fit_rows}, {"iterations", c.iterations}};
-  j["fitted"] = c.thresholds.has_value();
-  j["refused"] = c.thresholds ? nlohmann::json(nullptr) : nlohmann::json(c.refused);
-  return j;
 }
 
 void show_class(const char* name, const ClassCalibration& c, const ClassThresholds& t) {
@@ -186,11 +178,9 @@ int cmd_calibrate(const Args& args) {
   file.detector = config.detector;
   file.thresholds = thresholds;
   nlohmann::json& p = file.provenance;
-  p["method"] = "label-free";
+  p = calibration_provenance(fit);
   p["inputs"] = a.positionals();
   p["counts"] = {{"segments", in.segments.size()}, {"images", in.images}, {"failed_inputs", in.failed}};
-  p["contrast_floor"] = fit.contrast_floor;
-  p["fit"] = {{"marking", class_json(fit.marking)}, {"boundary", class_json(fit.boundary)}};
   // No date: the same input gives the same bytes.
   p["fieldlines_version"] = FIELDLINES_VERSION;
   save_thresholds_file(output, file);

@@ -64,33 +64,34 @@ std::size_t StudioController::accept_proposals() {
 }
 
 std::size_t StudioController::to_review() const {
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < image_count(); ++i) n += project_.images[i].segments.size() - progress(i).labelled;
-  return n;
+  std::size_t segments = 0;
+  for (const ImageEntry& e : project_.images) segments += e.segments.size();
+  return segments - labelled_total();
+}
+
+std::optional<StudioController::Uncertain> StudioController::least_certain(std::size_t image) const {
+  // Proposals were made with their own thresholds: rank by those once there are any.
+  const Thresholds& t = proposal_thresholds_ ? *proposal_thresholds_ : project_.thresholds;
+  std::optional<Uncertain> best;
+  const auto& segs = project_.images[image].segments;
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    if (segs[i].label != Label::Unlabelled) continue;
+    const double m = std::abs(decision_margin(features_[image][i], t));
+    if (!best || m < best->margin) best = Uncertain{i, m};
+  }
+  return best;
 }
 
 double StudioController::image_uncertainty(std::size_t image) const {
-  double least = std::numeric_limits<double>::infinity();
-  if (image >= image_count()) return least;
-  const Thresholds& t = proposal_thresholds_ ? *proposal_thresholds_ : project_.thresholds;
-  const auto& segs = project_.images[image].segments;
-  for (std::size_t i = 0; i < segs.size(); ++i)
-    if (segs[i].label == Label::Unlabelled) least = std::min(least, std::abs(decision_margin(features_[image][i], t)));
-  return least;
+  const auto u = image < image_count() ? least_certain(image) : std::nullopt;
+  return u ? u->margin : std::numeric_limits<double>::infinity();
 }
 
 std::optional<SegmentRef> StudioController::focus_most_uncertain() {
-  const Thresholds& t = proposal_thresholds_ ? *proposal_thresholds_ : project_.thresholds;
   std::optional<SegmentRef> best;
   double least = std::numeric_limits<double>::infinity();
-  for (std::size_t img = 0; img < image_count(); ++img) {
-    const auto& segs = project_.images[img].segments;
-    for (std::size_t i = 0; i < segs.size(); ++i) {
-      if (segs[i].label != Label::Unlabelled) continue;
-      const double m = std::abs(decision_margin(features_[img][i], t));
-      if (m < least) least = m, best = SegmentRef{img, i};
-    }
-  }
+  for (std::size_t img = 0; img < image_count(); ++img)
+    if (const auto u = least_certain(img); u && u->margin < least) least = u->margin, best = SegmentRef{img, u->segment};
   if (!best) return best;
   select_image(best->image);
   set_hovered(best->segment);

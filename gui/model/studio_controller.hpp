@@ -178,6 +178,12 @@ class StudioController {
   void recount();
   void after_label_change();
   void autosave();
+  // The image's least certain unlabelled segment and its |decision margin| (review.cpp).
+  struct Uncertain {
+    std::size_t segment;
+    double margin;
+  };
+  std::optional<Uncertain> least_certain(std::size_t image) const;
 
   Project project_;
   std::filesystem::path project_file_;

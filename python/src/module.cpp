@@ -186,13 +186,9 @@ py::dict calibrate_images(const py::object& images, const py::object& thresholds
   file.detector = start.detector;
   file.thresholds = calibrated;
   nlohmann::json& p = file.provenance;
-  p["method"] = "label-free";
+  p = calibration_provenance(fit);
   p["inputs"] = "python: fieldlines.calibrate";
   p["counts"] = {{"segments", all.size()}, {"images", views.size()}};
-  p["contrast_floor"] = fit.contrast_floor;
-  auto refused = [](const ClassCalibration& c) { return c.thresholds ? nlohmann::json(nullptr) : nlohmann::json(c.refused); };
-  p["fit"] = {{"marking", {{"fitted", fit.marking.thresholds.has_value()}, {"refused", refused(fit.marking)}}},
-              {"boundary", {{"fitted", fit.boundary.thresholds.has_value()}, {"refused", refused(fit.boundary)}}}};
   p["fieldlines_version"] = FIELDLINES_VERSION;
   return thresholds_dict(file);
 }

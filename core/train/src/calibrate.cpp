@@ -143,6 +143,12 @@ std::optional<double> posterior_crossing(const Mixture& m, double theta_a) {
   }
 }
 
+// The projection the weakest edge the detector accepts has at `angle_deg` from the transition,
+// its gradient at 45 degrees to the axes: the floor below which only noise is left.
+double projection_floor(double contrast_floor, double angle_deg) {
+  return contrast_floor * std::cos(angle_deg / kDeg) / std::sqrt(2.0);
+}
+
 struct Measured {
   double angle, projection, length;
 };
@@ -155,7 +161,7 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   const double theta_a = out.achromatic_deg;
   const double x_max = theta_a + params.window_deg;
   // The floor at the achromatic angle keeps the weakest real edges in the fit.
-  const double fit_floor = contrast_floor * std::cos(theta_a / kDeg) / std::sqrt(2.0);
+  const double fit_floor = projection_floor(contrast_floor, theta_a);
   // Sorted, so that the sums of the EM (and so every bit of the result) do not depend on the
   // order the segments came in.
   std::vector<std::pair<double, double>> kept;  // (angle, length)
@@ -199,7 +205,7 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
     if (class_posterior(*m, theta_a, x[i]) >= 0.5) member_length.push_back(length[i]);
   ClassThresholds t;
   t.max_angle_deg = static_cast<float>(*cut);
-  t.min_projection = static_cast<float>(contrast_floor * std::cos(*cut / kDeg) / std::sqrt(2.0));
+  t.min_projection = static_cast<float>(projection_floor(contrast_floor, *cut));
   t.min_length = static_cast<float>(percentile(member_length, params.length_percentile));
   out.thresholds = t;
   return out;
@@ -246,6 +252,20 @@ Thresholds calibrated_thresholds(const Calibration& c, const Thresholds& start) 
   t.marking.thresholds = *c.marking.thresholds;
   t.boundary.thresholds = c.boundary.thresholds ? *c.boundary.thresholds : disabled_class();
   return t;
+}
+
+nlohmann::json calibration_provenance(const Calibration& c) {
+  const auto class_json = [](const ClassCalibration& k) {
+    return nlohmann::json{{"achromatic_deg", k.achromatic_deg}, {"mean_deg", k.mean_deg},
+                          {"sd_deg", k.sd_deg}, {"achromatic_scale_deg", k.achromatic_scale_deg},
+                          {"class_mass", k.class_mass}, {"separation", k.separation},
+                          {"fit_rows", k.fit_rows}, {"iterations", k.iterations},
+                          {"fitted", k.thresholds.has_value()},
+                          {"refused", k.thresholds ? nlohmann::json(nullptr) : nlohmann::json(k.refused)}};
+  };
+  return {{"method", "label-free"},
+          {"contrast_floor", c.contrast_floor},
+          {"fit", {{"marking", class_json(c.marking)}, {"boundary", class_json(c.boundary)}}}};
 }
 
 }  // namespace fieldlines

@@ -20,6 +20,8 @@
 // Labels are never read. The result depends only on the set of segments, not on their order.
 #include <cstddef>
 #include <optional>
+
+#include <nlohmann/json.hpp>
 #include <span>
 #include <string>
 
@@ -70,5 +72,10 @@ ClassThresholds disabled_class();
 // `start` with each fitted class replaced, refused ones disabled. Throws fieldlines::Error
 // naming the reason when the marking class was refused: without it there is nothing to write.
 Thresholds calibrated_thresholds(const Calibration& calibration, const Thresholds& start = {});
+
+// What every face (CLI, Python) records of a fit in the thresholds file's provenance:
+// {"method": "label-free", "contrast_floor", "fit": {"marking": {...}, "boundary": {...}}}, each
+// class with its mode, spread, mass, separation, rows, iterations, "fitted" and "refused".
+nlohmann::json calibration_provenance(const Calibration& calibration);
 
 }  // namespace fieldlines
