@@ -5,7 +5,7 @@
 namespace fieldlines::studio {
 
 std::string format_figure(const ClassCounts& c, double value) {
-  if (!has_data(c)) return "n/a";
+  if (c.empty()) return "n/a";
   char text[32];
   std::snprintf(text, sizeof text, "%.3f", value);
   return text;

@@ -8,9 +8,7 @@
 
 namespace fieldlines::studio {
 
-inline bool has_data(const ClassCounts& c) { return c.tp + c.fp + c.fn > 0; }
-
-// `value` (one of c's figures) with three decimals, or "n/a" when !has_data(c).
+// `value` (one of c's figures) with three decimals, or "n/a" when c.empty() (the CLI's rule too).
 std::string format_figure(const ClassCounts& c, double value);
 
 }  // namespace fieldlines::studio

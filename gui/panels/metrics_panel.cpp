@@ -20,7 +20,7 @@ void counts_table(const char* id, const Counts& train, const Counts& test) {
       ImGui::TextUnformatted(studio::format_figure(c, figure).c_str());
     }
     ImGui::TableNextColumn();
-    if (studio::has_data(c)) ImGui::Text("%ld/%ld/%ld", c.tp, c.fp, c.fn);
+    if (!c.empty()) ImGui::Text("%ld/%ld/%ld", c.tp, c.fp, c.fn);
     else ImGui::TextUnformatted("n/a");
   };
   row("marking train", train.marking);

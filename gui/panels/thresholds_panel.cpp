@@ -24,7 +24,7 @@ bool class_sliders(const char* name, ClassThresholds& t, bool& released) {
 }
 
 void counts_line(const char* name, const ClassCounts& c) {
-  if (!studio::has_data(c)) {
+  if (c.empty()) {
     ImGui::Text("%-9s n/a (no labelled or predicted segment)", name);
     return;
   }
