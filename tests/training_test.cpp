@@ -5,6 +5,8 @@
 #include <optional>
 #include <random>
 #include <set>
+#include <stop_token>
+#include <string>
 #include <thread>
 #include <utility>
 
@@ -230,6 +232,63 @@ TEST(Training, RunsOnAWorkerThreadAndCancels) {
   EXPECT_TRUE(r.cancelled);
   EXPECT_LT(r.iterations_run, 100000);
   EXPECT_GE(r.iterations_run, 3);
+}
+
+// The polish is reported as its own last step, carrying the result's score and thresholds, so a
+// progress display never ends on the PSO's (lower) best while the result says more.
+TEST(Training, ReportsThePolishAsItsOwnPhaseWithTheResultsScore) {
+  const auto segs = synthetic(800, 5);
+  for (const fl::TrainClass target : {fl::TrainClass::Marking, fl::TrainClass::Both}) {
+    fl::TrainParams p;
+    p.target = target;
+    p.pso.particles = 6;
+    p.pso.iterations = 3;  // a short swarm, so the polish has something left to gain
+    std::vector<fl::TrainingPhase> phases;
+    std::optional<fl::TrainingProgress> polish;
+    std::vector<fl::Thresholds> polished;
+    double last_pso_best = 0;
+    const fl::TrainResult r = fl::train(segs, {}, p, [&](const fl::TrainingProgress& prog) {
+      phases.push_back(prog.phase);
+      if (prog.phase == fl::TrainingPhase::Pso) last_pso_best = prog.best_score;
+      if (prog.phase != fl::TrainingPhase::Polish) return;
+      polish = prog;
+      polished.assign(prog.particles.begin(), prog.particles.end());
+      polish->particles = {}, polish->scores = {};  // only valid during the call
+      EXPECT_EQ(prog.particles.size(), prog.scores.size());
+    });
+    SCOPED_TRACE(std::string(fl::to_string(target)));
+    ASSERT_EQ(phases.size(), 4u);  // three iterations, then the polish
+    EXPECT_EQ(std::count(phases.begin(), phases.end(), fl::TrainingPhase::Pso), 3);
+    EXPECT_EQ(phases.back(), fl::TrainingPhase::Polish);
+    ASSERT_TRUE(polish.has_value());
+    EXPECT_EQ(polish->best_score, r.score);
+    EXPECT_EQ(polish->best, r.thresholds);
+    EXPECT_EQ(polish->iteration, r.iterations_run);
+    EXPECT_EQ(polish->iterations, 3);
+    // The case the studio's line got wrong: the polish gained on the swarm's last best.
+    EXPECT_GT(r.score, last_pso_best);
+    // Polished starts: the PSO best, the corners and the particle bests, each with the untrained
+    // class's thresholds as given (not the search's switched-off boundary test).
+    EXPECT_GE(polished.size(), 1u + static_cast<std::size_t>(r.polished_particle_bests));
+    if (target == fl::TrainClass::Marking) {
+      for (const fl::Thresholds& t : polished) EXPECT_EQ(t.boundary.thresholds, fl::Thresholds{}.boundary.thresholds);
+    }
+  }
+  // Without the polish, or stopped, there is no polish step.
+  fl::TrainParams p;
+  p.pso.iterations = 3;
+  p.polish = false;
+  int polish_reports = 0;
+  fl::train(segs, {}, p, [&](const fl::TrainingProgress& prog) { polish_reports += prog.phase == fl::TrainingPhase::Polish; });
+  EXPECT_EQ(polish_reports, 0);
+  p.polish = true;
+  std::stop_source stop;
+  stop.request_stop();
+  const fl::TrainResult stopped = fl::train(segs, {}, p, [&](const fl::TrainingProgress& prog) {
+    polish_reports += prog.phase == fl::TrainingPhase::Polish;
+  }, stop.get_token());
+  EXPECT_TRUE(stopped.cancelled);
+  EXPECT_EQ(polish_reports, 0);
 }
 
 // polish_starts particle bests are polished on top of the PSO best and the box corners, for one

@@ -1,6 +1,7 @@
 #include "gui/model/training_job.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <span>
 
 namespace fieldlines::studio {
@@ -15,6 +16,18 @@ Counts count_with(std::span<const Segment> segments, const Thresholds& t) {
 }
 }  // namespace
 
+std::string progress_line(const TrainingSnapshot& snap) {
+  char line[128];
+  if (snap.phase == TrainingPhase::Polish) {
+    std::snprintf(line, sizeof line, "polish: best %.3f (PSO %.3f after %d iterations)", snap.best_score,
+                  snap.pso_best_score, snap.iteration);
+  } else {
+    std::snprintf(line, sizeof line, "PSO iteration %d/%d  best %.3f", snap.iteration, snap.iterations,
+                  snap.best_score);
+  }
+  return line;
+}
+
 void TrainingJob::start(std::vector<Segment> train_set, std::vector<Segment> test_set, const Thresholds& initial,
                         const TrainParams& params) {
   best_scores_.clear();
@@ -25,13 +38,15 @@ void TrainingJob::start(std::vector<Segment> train_set, std::vector<Segment> tes
     const auto t0 = Clock::now();
     const auto on_progress = [&](const TrainingProgress& p) {
       TrainingSnapshot snap;
+      snap.phase = p.phase;
       snap.iteration = p.iteration;
       snap.iterations = p.iterations;
       snap.best_score = p.best_score;
       snap.best = p.best;
       snap.particles.assign(p.particles.begin(), p.particles.end());
       snap.elapsed_s = std::chrono::duration<double>(Clock::now() - t0).count();
-      snap.eta_s = p.iteration > 0 ? snap.elapsed_s / p.iteration * (p.iterations - p.iteration) : 0;
+      const bool swarming = p.phase == TrainingPhase::Pso && p.iteration > 0;
+      snap.eta_s = swarming ? snap.elapsed_s / p.iteration * (p.iterations - p.iteration) : 0;
       report(std::move(snap));
     };
     TrainingResult r;
@@ -45,7 +60,11 @@ void TrainingJob::start(std::vector<Segment> train_set, std::vector<Segment> tes
 std::size_t TrainingJob::poll() {
   std::vector<TrainingSnapshot> snapshots = job_.poll();
   for (TrainingSnapshot& s : snapshots) {
-    best_scores_.push_back(s.best_score);
+    if (s.phase == TrainingPhase::Pso) {
+      best_scores_.push_back(s.best_score);
+    } else if (!best_scores_.empty()) {
+      s.pso_best_score = best_scores_.back();
+    }
     latest_ = std::move(s);
   }
   return snapshots.size();

@@ -1,8 +1,10 @@
 #pragma once
 // Threshold training (PSO + polish) as a background Job (gui/model/job.hpp): one snapshot per
-// iteration, then the trained thresholds with their counts on both splits, or the error.
+// PSO iteration and one for the polish, then the trained thresholds with their counts on both
+// splits, or the error.
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "fieldlines/train/training.hpp"
@@ -11,13 +13,19 @@
 namespace fieldlines::studio {
 
 struct TrainingSnapshot {
+  TrainingPhase phase = TrainingPhase::Pso;
   int iteration = 0, iterations = 0;
-  double best_score = 0;
+  double best_score = 0;              // Polish: the result's score (run.score)
+  double pso_best_score = 0;          // Polish: the last PSO iteration's best, for comparison
   Thresholds best;
-  std::vector<Thresholds> particles;  // this iteration's swarm, for the scatter plot
+  std::vector<Thresholds> particles;  // this iteration's swarm (Polish: the polished starts)
   double elapsed_s = 0;
-  double eta_s = 0;                   // from the mean time per iteration so far
+  double eta_s = 0;                   // from the mean time per iteration so far (0 once polished)
 };
+
+// The Train tab's progress line: "PSO iteration 7/15  best 82.000" while the swarm runs, then
+// "polish: best 84.000 (PSO 82.000 after 15 iterations)", the score the result reports.
+std::string progress_line(const TrainingSnapshot& snap);
 
 struct TrainingResult {
   TrainResult run;                   // run.cancelled when stopped early (the best so far)
@@ -41,7 +49,7 @@ class TrainingJob {
     poll();
   }
 
-  const std::vector<double>& best_scores() const { return best_scores_; }  // one per iteration
+  const std::vector<double>& best_scores() const { return best_scores_; }  // one per PSO iteration
   const std::optional<TrainingSnapshot>& latest() const { return latest_; }
   // Failed when training threw (e.g. nothing labelled).
   const std::optional<Outcome<TrainingResult>>& outcome() const { return job_.outcome(); }

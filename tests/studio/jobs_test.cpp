@@ -6,6 +6,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -184,6 +186,43 @@ TEST(TrainingJob, RunsToTheEndAndReportsEveryIteration) {
   EXPECT_FALSE(c.has_unsaved_settings());
   EXPECT_EQ(fieldlines::Project::load(data.file).thresholds, outcome->value().run.thresholds);
   EXPECT_LT(c.train_counts().marking.fn, missed);  // live metrics follow the applied thresholds
+}
+
+// The progress line ends on the polish, with the score the result shows ("best 82" beside
+// "score 84" was the complaint); the curve keeps one point per PSO iteration.
+TEST(TrainingJob, ThePolishIsTheLastSnapshotWithTheResultsScore) {
+  Labelled data;
+  fs::StudioController c(fieldlines::Project::load(data.file), data.file);
+  auto t = c.thresholds();
+  t.marking.thresholds.min_length = 300;
+  c.set_thresholds(t);
+  auto params = small_training(2);
+  params.polish = true;
+  c.start_training(params);
+  c.training().wait();
+  const auto& outcome = c.training().outcome();
+  ASSERT_TRUE(outcome.has_value() && outcome->ok());
+  const fieldlines::TrainResult& run = outcome->value().run;
+  EXPECT_EQ(c.training().best_scores().size(), 2u);
+  ASSERT_TRUE(c.training().latest().has_value());
+  const fs::TrainingSnapshot& last = *c.training().latest();
+  EXPECT_EQ(last.phase, fieldlines::TrainingPhase::Polish);
+  EXPECT_EQ(last.best_score, run.score);
+  EXPECT_EQ(last.best, run.thresholds);
+  EXPECT_EQ(last.pso_best_score, c.training().best_scores().back());
+  EXPECT_EQ(last.eta_s, 0);
+  EXPECT_FALSE(last.particles.empty());
+  char score[32];
+  std::snprintf(score, sizeof score, "%.3f", run.score);
+  const std::string line = fs::progress_line(last);
+  EXPECT_EQ(line.rfind("polish: best " + std::string(score), 0), 0u) << line;
+
+  // Without the polish the line stays on the swarm.
+  c.start_training(small_training(2));
+  c.training().wait();
+  ASSERT_TRUE(c.training().latest().has_value());
+  EXPECT_EQ(c.training().latest()->phase, fieldlines::TrainingPhase::Pso);
+  EXPECT_EQ(fs::progress_line(*c.training().latest()).rfind("PSO iteration 2/2  best ", 0), 0u);
 }
 
 TEST(TrainingJob, CancelStopsEarlyWithTheBestSoFar) {

@@ -386,6 +386,8 @@ TrainResult train(std::span<const Segment> labelled, const Thresholds& start, co
   r.thresholds = to_thresholds(inner_start, dims, pso.best_position.data());
   r.pso_score = pso.best_score;
   r.score = pso.best_score;
+  std::vector<Thresholds> polished;  // where each polish start ended, for the Polish report
+  std::vector<double> polished_scores;
   if (params.polish && !r.cancelled) {
     Polisher polisher(table, params, dims);
     // Several starts cost little (each polish is a few sorts) and escape the odd local optimum
@@ -419,16 +421,34 @@ TrainResult train(std::span<const Segment> labelled, const Thresholds& start, co
         ++r.polished_particle_bests;
     }
     double best = -INFINITY;
+    polished.reserve(starts.size());
     for (Thresholds t : starts) {
       const double s = polisher.polish(t);
       if (s > best) best = s, r.thresholds = t;
+      polished.push_back(t);
+      polished_scores.push_back(s);
     }
     r.score = best;
   }
-  r.thresholds.boundary.thresholds = params.target == TrainClass::Marking ? start.boundary.thresholds
-                                                                          : r.thresholds.boundary.thresholds;
+  // Marking only: the search ran with the boundary test switched off; put the fixed one back.
+  const auto with_start_boundary = [&](Thresholds& t) {
+    if (params.target == TrainClass::Marking) t.boundary.thresholds = start.boundary.thresholds;
+  };
+  with_start_boundary(r.thresholds);
   r.counts = full.count(r.thresholds.boundary.thresholds, r.thresholds.marking.thresholds);
   r.score = params.objective.score(target_counts(r.counts, params.target));
+  if (on_progress && !polished.empty()) {
+    std::for_each(polished.begin(), polished.end(), with_start_boundary);
+    TrainingProgress prog;
+    prog.phase = TrainingPhase::Polish;
+    prog.iteration = r.iterations_run;
+    prog.iterations = params.pso.iterations;
+    prog.best_score = r.score;
+    prog.best = r.thresholds;
+    prog.particles = polished;
+    prog.scores = polished_scores;
+    on_progress(prog);
+  }
   return r;
 }
 

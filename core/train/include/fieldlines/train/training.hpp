@@ -65,13 +65,18 @@ struct TrainParams {
   int threads = 1;        // workers scoring the swarm (1 = the calling thread only)
 };
 
-// Passed to the callback after every PSO iteration; the spans are only valid during the call
-// (copy what you keep, e.g. to hand to a UI thread).
+// Passed to the callback after every PSO iteration and, when the polish runs, once more after
+// it (phase Polish), so that a progress display ends on the result's own score rather than on
+// the PSO's lower one. The spans are only valid during the call (copy what you keep, e.g. to
+// hand to a UI thread).
+enum class TrainingPhase { Pso, Polish };
 struct TrainingProgress {
-  int iteration = 0, iterations = 0;
-  double best_score = 0;
-  Thresholds best;                        // the best thresholds so far
-  std::span<const Thresholds> particles;  // every particle's thresholds this iteration
+  TrainingPhase phase = TrainingPhase::Pso;
+  int iteration = 0, iterations = 0;  // Polish: the PSO's iterations run, of its iterations
+  double best_score = 0;              // Polish: exactly TrainResult::score
+  Thresholds best;                        // the best thresholds so far (Polish: the result's)
+  std::span<const Thresholds> particles;  // every particle's thresholds this iteration (Polish:
+                                          // where each polish start ended)
   std::span<const double> scores;         // and their scores
 };
 using TrainingCallback = std::function<void(const TrainingProgress&)>;
