@@ -28,7 +28,8 @@ void validate(const DetectorParams& p) {
     require(s >= 1 && s <= 100, "junction_sizes must each be in [1, 100]");
 }
 
-struct LineDetector::Impl {
+// Hidden like the engine it holds (see elsed/line_model.hpp).
+struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   ElsedEngine engine;
   cv::Mat eight, bgr8;  // the input normalised to 8-bit BGR, reused between calls
 };

@@ -8,6 +8,8 @@
 #include "fieldlines/detect/segment.hpp"
 #include "line_model.hpp"
 
+#pragma GCC visibility push(hidden)  // private to the library (see line_model.hpp)
+
 namespace fieldlines::elsed {
 
 struct ValidationParams {
@@ -24,3 +26,5 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
                       Segment& out);
 
 }  // namespace fieldlines::elsed
+
+#pragma GCC visibility pop

@@ -114,7 +114,7 @@ void EdgeDrawer::draw_tree(Pixel anchor, std::vector<Pixel>& anchor_pixels, bool
             model_started = true;
             seg.init(chain_, checked);
           }
-          if (seg.fit_error(chain_) < params_.line_fit_error) {
+          if (seg.fits(chain_, params_.line_fit_error)) {
             on_segment = true;
             for (int i = checked; i < checked + min_len; ++i) mark(chain_[i]) = Mark::Inlier;
           } else {

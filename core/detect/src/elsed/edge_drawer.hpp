@@ -13,6 +13,8 @@
 #include "elsed_types.hpp"
 #include "line_model.hpp"
 
+#pragma GCC visibility push(hidden)  // private to the library (see line_model.hpp)
+
 namespace fieldlines::elsed {
 
 struct DrawerParams {
@@ -63,3 +65,5 @@ class EdgeDrawer {
 };
 
 }  // namespace fieldlines::elsed
+
+#pragma GCC visibility pop

@@ -10,6 +10,8 @@
 #include "gradient_pass.hpp"
 #include "fieldlines/detect/detector.hpp"
 
+#pragma GCC visibility push(hidden)  // private to the library (see line_model.hpp)
+
 namespace fieldlines {
 
 class ElsedEngine {
@@ -34,3 +36,5 @@ class ElsedEngine {
 };
 
 }  // namespace fieldlines
+
+#pragma GCC visibility pop

@@ -14,6 +14,8 @@
 
 #include "elsed_types.hpp"
 
+#pragma GCC visibility push(hidden)  // private to the library (see line_model.hpp)
+
 namespace fieldlines::elsed {
 
 // OpenCV's 8-bit Gaussian kernel: 8 fraction bits (raw values sum to 256), rounded by error
@@ -41,3 +43,5 @@ class GradientPass {
 };
 
 }  // namespace fieldlines::elsed
+
+#pragma GCC visibility pop

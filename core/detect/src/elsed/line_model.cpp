@@ -46,21 +46,6 @@ void LineModel::slide_two(const std::vector<Pixel>& chain) {
   }
 }
 
-void LineModel::add(Pixel p, int index_in_chain, bool at_end) {
-  accumulate(p, +1);
-  update_equation();
-  if (at_end) {
-    prev_last_ = last_;
-    last_ = p;
-  } else {
-    prev_first_ = first_;
-    first_ = p;
-  }
-  // Pixels of one segment are contiguous in the chain, so the newest is always the last index.
-  last_index_ = index_in_chain;
-  sorted_ = sorted_ && at_end;
-}
-
 void LineModel::remove_endpoint(bool at_end) {
   accumulate(at_end ? last_ : first_, -1);
   update_equation();
@@ -93,42 +78,38 @@ double LineModel::fit_error(const std::vector<Pixel>& chain) const {
   return sum / n_;
 }
 
+bool LineModel::fits(const std::vector<Pixel>& chain, double max_error) const {
+  // sum (a u + b v + c)^2 expanded over the moments, in coordinates centred on the first pixel
+  // so the terms stay near the result (the exact integer moments make the centring exact).
+  const std::int64_t n = n_;
+  const std::int64_t u0 = horizontal_ ? first_.x : first_.y, v0 = horizontal_ ? first_.y : first_.x;
+  const auto su = static_cast<double>(sx_ - n * u0), sv = static_cast<double>(sy_ - n * v0);
+  const auto suu = static_cast<double>(sxx_ - 2 * u0 * sx_ + n * u0 * u0);
+  const auto svv = static_cast<double>(syy_ - 2 * v0 * sy_ + n * v0 * v0);
+  const auto suv = static_cast<double>(sxy_ - u0 * sy_ - v0 * sx_ + n * u0 * v0);
+  const double a = horizontal_ ? eq_[0] : eq_[1], b = horizontal_ ? eq_[1] : eq_[0];
+  const double c = eq_[2] + a * static_cast<double>(u0) + b * static_cast<double>(v0);
+  const double dn = static_cast<double>(n);
+  const double t_uu = a * a * suu, t_vv = b * b * svv, t_cc = dn * c * c;
+  const double t_uv = 2 * a * b * suv, t_uc = 2 * a * c * su, t_vc = 2 * b * c * sv;
+  const double sum = t_uu + t_vv + t_cc + t_uv + t_uc + t_vc;
+  // Both this and the loop are off the exact sum by a few ulps of the terms' magnitudes and of
+  // n (|c| + |x| + |y|)^2 (every window pixel lies within n steps of the first): 1e-12 of that
+  // is thousands of times wider than either error, and still decides all but ties.
+  const double k = std::abs(eq_[2]) + std::abs(first_.x) + std::abs(first_.y) + 2 * dn + 1;
+  const double margin =
+      1e-12 * (t_uu + t_vv + t_cc + std::abs(t_uv) + std::abs(t_uc) + std::abs(t_vc) + dn * k * k);
+  const double limit = max_error * dn;
+  if (sum < limit - margin) return true;
+  if (sum > limit + margin) return false;
+  return fit_error(chain) < max_error;
+}
+
 void LineModel::refit(const std::vector<Pixel>& chain, int start) {
-  sx_ = sy_ = sxy_ = sxx_ = 0;
+  sx_ = sy_ = sxy_ = sxx_ = syy_ = 0;
   n_ = 0;
   for (std::size_t i = start; i < chain.size(); ++i) accumulate(chain[i], +1);
   update_equation();
-}
-
-void LineModel::accumulate(Pixel p, int sign) {
-  const std::int64_t major = horizontal_ ? p.x : p.y;
-  const std::int64_t minor = horizontal_ ? p.y : p.x;
-  n_ += sign;
-  sx_ += sign * major;
-  sy_ += sign * minor;
-  sxx_ += sign * major * major;
-  sxy_ += sign * major * minor;
-}
-
-void LineModel::update_equation() {
-  const std::int64_t n = n_;
-  const double along = static_cast<double>(n * sxy_ - sx_ * sy_);
-  const double across = static_cast<double>(sx_ * sx_ - n * sxx_);
-  eq_[2] = static_cast<double>(sy_ * sxx_ - sx_ * sxy_);
-  eq_[0] = horizontal_ ? along : across;
-  eq_[1] = horizontal_ ? across : along;
-  const double norm = std::sqrt(eq_[0] * eq_[0] + eq_[1] * eq_[1]);
-  if (norm > 0 && std::isfinite(norm)) {
-    for (double& e : eq_) e /= norm;
-  } else {
-    // Degenerate sums (every pixel on one major coordinate): the axis line through their mean,
-    // never a NaN equation.
-    const double minor_mean = n > 0 ? static_cast<double>(sy_) / static_cast<double>(n) : 0.0;
-    eq_ = horizontal_ ? std::array<double, 3>{0.0, 1.0, -minor_mean} : std::array<double, 3>{1.0, 0.0, -minor_mean};
-  }
-  // Orient the normal so the line direction (-b, a) follows the drawing direction.
-  if (dx_ * -eq_[1] + dy_ * eq_[0] < 0)
-    for (double& e : eq_) e = -e;
 }
 
 }  // namespace fieldlines::elsed
