@@ -165,6 +165,7 @@ int run(const studio::StudioArgs& args) {
   Window window(args.window_width, args.window_height, !bench);
   studio::ControllerOptions options;
   options.autosave = start.autosave;
+  options.auto_train = args.auto_train;
   studio::FrameStats frame_stats(bench ? static_cast<std::size_t>(args.bench_frames) : 240);
   gui::UiState ui;
   ui.frame_stats = &frame_stats;

@@ -11,24 +11,33 @@
 
 namespace fieldlines::studio {
 
+ProposalParams StudioController::proposal_params() {
+  ProposalParams params;
+  // Trained like `fieldlines train` trains by default, so proposals match what the CLI would make.
+  params.train = protocol_spec(Protocol::Ours).train;
+  return params;
+}
+
+std::size_t StudioController::refresh_proposals(const Thresholds& t) {
+  std::size_t proposed = 0;
+  for (ImageEntry& e : project_.images) {
+    e.proposals.resize(e.segments.size(), Label::Unlabelled);
+    for (std::size_t i = 0; i < e.segments.size(); ++i) {
+      const bool open = e.segments[i].label == Label::Unlabelled;
+      e.proposals[i] = open ? classify(e.segments[i], t) : Label::Unlabelled;
+      proposed += open;
+    }
+  }
+  proposal_thresholds_ = t;
+  return proposed;
+}
+
 std::string StudioController::propose() {
   std::vector<Segment> all;
   for (const ImageEntry& e : project_.images) all.insert(all.end(), e.segments.begin(), e.segments.end());
   const LabelledSet labelled = project_.labelled();
-  ProposalParams params;
-  // Trained like `fieldlines train` trains by default, so proposals match what the CLI would make.
-  params.train = protocol_spec(Protocol::Ours).train;
-  const ProposalThresholds made = proposal_thresholds(all, labelled.segments, project_.thresholds, params);
-  std::size_t proposed = 0;
-  for (ImageEntry& e : project_.images) {
-    e.proposals.assign(e.segments.size(), Label::Unlabelled);
-    for (std::size_t i = 0; i < e.segments.size(); ++i) {
-      if (e.segments[i].label != Label::Unlabelled) continue;
-      e.proposals[i] = classify(e.segments[i], made.thresholds);
-      ++proposed;
-    }
-  }
-  proposal_thresholds_ = made.thresholds;
+  const ProposalThresholds made = proposal_thresholds(all, labelled.segments, project_.thresholds, proposal_params());
+  const std::size_t proposed = refresh_proposals(made.thresholds);
   proposal_summary_ = std::to_string(proposed) + " proposals (marking " + std::string(to_string(made.marking)) +
                       ", boundary " + std::string(to_string(made.boundary)) + ")";
   if (!made.note.empty()) proposal_summary_ += "; " + made.note;

@@ -20,7 +20,7 @@ int parse_int(const std::string& text, const std::string& option, int lo, int hi
 
 const char* studio_usage() {
   return "usage: fieldlines-studio [PROJECT.json | IMAGE_FOLDER | VIDEO | --last] [--every N] [--window-size WxH]\n"
-         "                         [--bench-frames N] [--version]\n"
+         "                         [--no-auto-train] [--bench-frames N] [--version]\n"
          "  PROJECT.json     a studio project (labels are autosaved into it)\n"
          "  IMAGE_FOLDER     images to label; creates IMAGE_FOLDER/fieldlines-project.json\n"
          "  VIDEO            mp4/avi/mkv/mov/webm: every N-th frame (--every, default 10) goes to\n"
@@ -28,6 +28,8 @@ const char* studio_usage() {
          "  (nothing)        the built-in demo: synthetic field pictures, some labelled, made on first use\n"
          "  --last           reopen the most recent project (also listed in the Images tab)\n"
          "  --window-size    initial window size, default 1280x800\n"
+         "  --no-auto-train  start with live retraining off (it retrains both classes after every\n"
+         "                   label change; the Train tab's checkbox toggles it)\n"
          "  --bench-frames N render N frames as fast as possible, print the median frame time, exit\n"
          "                   (without a project: a 640x480 image with 300 segments)\n"
          "  --state-file F   write the view transform, hovered segment and save count to F as JSON\n"
@@ -61,6 +63,8 @@ StudioArgs parse_studio_args(const std::vector<std::string>& args) {
       if (x == std::string::npos) throw Error(a + ": expected WIDTHxHEIGHT, got '" + v + "'");
       out.window_width = parse_int(v.substr(0, x), a, 200, 16384);
       out.window_height = parse_int(v.substr(x + 1), a, 200, 16384);
+    } else if (a == "--no-auto-train") {
+      out.auto_train = false;
     } else if (a == "--every") {
       out.video_every = parse_int(value(), a, 1, 100000);
     } else if (a == "--state-file") {

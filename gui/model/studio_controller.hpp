@@ -12,6 +12,7 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include "gui/model/auto_train.hpp"
 #include "gui/model/detection_job.hpp"
 #include "fieldlines/detect/classifier.hpp"
 #include "fieldlines/detect/detector.hpp"
@@ -25,6 +26,9 @@ namespace fieldlines::studio {
 struct ControllerOptions {
   bool autosave = true;  // save the project atomically after every label edit
   bool load_pixels = true;  // read the current image from disk (tests can skip it)
+  // Retrain both classes in the background after every label change (the studio turns this
+  // on by default; off here so tests choose when thresholds may change).
+  bool auto_train = false;
 };
 
 // What the background detections since the last detect_all() did: how many images, the labels
@@ -156,6 +160,19 @@ class StudioController {
   std::optional<SegmentRef> focus_most_uncertain();
   std::optional<std::size_t> take_focus_request();
 
+  // --- live retraining (gui/model/live_training.cpp): with auto-train on, every label change
+  // retrains both classes on the train split in the background (poll() starts and adopts it);
+  // the result becomes the thresholds, refreshes predictions, proposals and metrics, and adds a
+  // point to the learning curve. Editing thresholds by hand turns it off (the caller does).
+  bool auto_train() const { return options_.auto_train; }
+  void set_auto_train(bool on);  // on: retrains the current labels at the next poll
+  bool auto_train_busy() const { return auto_train_.running() || auto_train_pending_; }
+  const std::vector<CurvePoint>& learning_curve() const { return curve_; }
+  // One line: what the last retraining used and how long it took, or why it failed.
+  const std::string& auto_train_summary() const { return auto_train_summary_; }
+  // Polls until no retraining is pending or running (tests; shutdown needs nothing: the job joins).
+  void wait_for_auto_train(double now_s = 0);
+
   // --- training (background)
   void start_training(const TrainParams& params);
   void cancel_training() { training_.cancel(); }
@@ -184,6 +201,12 @@ class StudioController {
     double margin;
   };
   std::optional<Uncertain> least_certain(std::size_t image) const;
+  // The review loop's training rule, shared by propose() and auto-train (review.cpp).
+  static ProposalParams proposal_params();
+  // Re-proposes every unlabelled segment that has a proposal slot with `t` (review.cpp).
+  std::size_t refresh_proposals(const Thresholds& t);
+  void start_auto_train();
+  void adopt_auto_train(const AutoTrainResult& result);
 
   Project project_;
   std::filesystem::path project_file_;
@@ -211,6 +234,10 @@ class StudioController {
   std::optional<Thresholds> proposal_thresholds_;  // what the proposals were made with
   std::string proposal_summary_;
   std::optional<std::size_t> focus_request_;
+  AutoTrainJob auto_train_;
+  bool auto_train_pending_ = false;
+  std::vector<CurvePoint> curve_;
+  std::string auto_train_summary_;
 };
 
 }  // namespace fieldlines::studio

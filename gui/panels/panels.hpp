@@ -9,6 +9,8 @@ void draw_images_panel(studio::StudioController& controller, UiState& ui);
 void draw_label_panel(studio::StudioController& controller, UiState& ui);
 void draw_thresholds_panel(studio::StudioController& controller, UiState& ui);
 void draw_train_panel(studio::StudioController& controller, UiState& ui);
+// Auto-train, proposals and the learning curve: the top of the Train tab.
+void draw_auto_train(studio::StudioController& controller);
 void draw_metrics_panel(studio::StudioController& controller, UiState& ui);
 void draw_export_panel(studio::StudioController& controller, UiState& ui);
 

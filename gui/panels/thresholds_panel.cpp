@@ -35,6 +35,7 @@ void counts_line(const char* name, const ClassCounts& c) {
 
 void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/) {
   Thresholds t = controller.thresholds();
+  if (controller.auto_train()) ImGui::TextDisabled("auto-train is on: moving a slider turns it off");
   bool released = false;
   bool changed = class_sliders("marking (white <-> green)", t.marking.thresholds, released);
   ImGui::Separator();
@@ -43,7 +44,10 @@ void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/
     t = Thresholds{};
     changed = released = true;
   }
-  if (changed) controller.set_thresholds(t);
+  if (changed) {
+    controller.set_auto_train(false);  // otherwise the next label change overwrites the hand tuning
+    controller.set_thresholds(t);
+  }
   if (released) controller.flush();
   ImGui::Separator();
   ImGui::TextUnformatted("Labelled data with these thresholds, train split:");

@@ -48,6 +48,9 @@ void draw_scatter(const studio::TrainingSnapshot& snap, int dx, int dy) {
 
 void draw_train_panel(studio::StudioController& controller, UiState& ui) {
   TrainParams& p = ui.train_params;
+  draw_auto_train(controller);
+  ImGui::Separator();
+  ImGui::TextUnformatted("PSO training");
   studio::TrainingJob& job = controller.training();
   ImGui::BeginDisabled(job.running());
   int target = static_cast<int>(p.target);

@@ -6,9 +6,7 @@
 #include <cmath>
 
 #include "fieldlines/data/project.hpp"
-#include "fixtures.hpp"
-#include "gui/model/studio_controller.hpp"
-#include "tests/known_features.hpp"
+#include "review_fixture.hpp"
 
 namespace fs = fieldlines::studio;
 using fieldlines::Label;
@@ -16,30 +14,7 @@ using fieldlines::Project;
 
 namespace {
 
-// Three images sharing the known synthetic features; the true labels are kept aside.
-struct Review {
-  Review() : dir("review") {
-    const fieldlines::test::KnownField k = fieldlines::test::known_field(9);
-    Project p;
-    for (int img = 0; img < 3; ++img) p.images.push_back({"img" + std::to_string(img) + ".png", {}, 1.0, {}});
-    for (std::size_t i = 0; i < k.segments.size(); ++i) {
-      fieldlines::Segment s = k.segments[i];
-      truth.push_back(s.label);
-      s.label = Label::Unlabelled;
-      p.images[i % 3].segments.push_back(s);
-    }
-    file = dir.path() / "project.json";
-    p.save(file);
-    fs::ControllerOptions options;
-    options.load_pixels = false;
-    controller.emplace(Project::load(file), file, options);
-  }
-  Label true_label(std::size_t image, std::size_t segment) const { return truth[segment * 3 + image]; }
-  studio_test::TempDir dir;
-  std::filesystem::path file;
-  std::vector<Label> truth;
-  std::optional<fs::StudioController> controller;
-};
+using Review = studio_test::ReviewProject;
 
 TEST(StudioReview, ProposeThenAcceptOneImageAtATimeWithOneUndoStepEach) {
   Review r;

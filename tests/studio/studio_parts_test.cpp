@@ -77,6 +77,8 @@ TEST(StudioArgs, ParsesAndRejects) {
   EXPECT_THROW(fs::parse_studio_args({"--frobnicate"}), fieldlines::Error);
   EXPECT_THROW(fs::parse_studio_args({"a", "b"}), fieldlines::Error);
   EXPECT_TRUE(fs::parse_studio_args({"--last"}).last);
+  EXPECT_TRUE(fs::parse_studio_args({}).auto_train);  // live retraining is on unless asked
+  EXPECT_FALSE(fs::parse_studio_args({"--no-auto-train"}).auto_train);
   EXPECT_TRUE(fs::parse_studio_args({}).input.empty());  // nothing: the demo
   EXPECT_FALSE(fs::parse_studio_args({}).last);
   EXPECT_THROW(fs::parse_studio_args({"--last", "p.json"}), fieldlines::Error);

@@ -48,4 +48,12 @@ Evaluation evaluate(const LabelledSet& data, const Thresholds& thresholds) {
   return ev;
 }
 
+Counts count_labelled(std::span<const Segment> segments, const Thresholds& thresholds) {
+  Counts counts;
+  for (const Segment& s : segments) {
+    if (s.label != Label::Unlabelled) tally(counts, s.label, classify(s, thresholds));
+  }
+  return counts;
+}
+
 }  // namespace fieldlines

@@ -3,6 +3,7 @@
 //
 // For a class C: TP = predicted C and labelled C; FP = predicted C, labelled otherwise;
 // FN = labelled C, predicted otherwise. Precision/recall/F1 are 0 when undefined (0/0).
+#include <span>
 #include <string>
 #include <vector>
 
@@ -44,5 +45,7 @@ struct Evaluation {
 };
 
 Evaluation evaluate(const LabelledSet& data, const Thresholds& thresholds);
+// The totals alone over plain segments (their .label is the truth; unlabelled ones are skipped).
+Counts count_labelled(std::span<const Segment> segments, const Thresholds& thresholds);
 
 }  // namespace fieldlines

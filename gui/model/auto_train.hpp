@@ -1,0 +1,52 @@
+#pragma once
+// Live retraining while the user labels: after every label change both classes are retrained
+// in the background (fieldlines/train/review.hpp: label-free until a class has enough labels,
+// then trained on the train split), and each result adds a point to the learning curve, so the
+// user watches the classifier converge as they label.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "fieldlines/train/metrics.hpp"
+#include "fieldlines/train/review.hpp"
+#include "gui/model/job.hpp"
+
+namespace fieldlines::studio {
+
+// One retraining's inputs, copied so the worker shares nothing with the UI thread.
+struct AutoTrainInput {
+  std::vector<Segment> all;          // every segment of the project, for label-free calibration
+  std::vector<Segment> train, test;  // the labelled segments of each split
+  Thresholds start;
+  ProposalParams params;
+};
+
+struct AutoTrainResult {
+  ProposalThresholds made;
+  Counts train_counts, test_counts;  // of made.thresholds on each split
+  std::size_t train_segments = 0, test_segments = 0;
+  double elapsed_ms = 0;
+};
+
+// A point of the learning curve: the figures after a retraining on `labelled` labels.
+struct CurvePoint {
+  std::size_t labelled = 0, test_segments = 0;
+  Counts test;  // on the test split (empty classes are n/a, ClassCounts::empty)
+};
+
+class AutoTrainJob {
+ public:
+  void start(AutoTrainInput input);
+  bool running() const { return job_.running(); }
+  // UI thread: the finished retraining, once (nullopt while running or when none finished).
+  // A failed run leaves its reason in error().
+  std::optional<AutoTrainResult> poll();
+  void wait() { job_.wait(); }  // tests and shutdown
+  const std::string& error() const { return error_; }
+
+ private:
+  Job<int, AutoTrainResult> job_;
+  std::string error_;
+};
+
+}  // namespace fieldlines::studio
