@@ -2,7 +2,9 @@
 // inputs (tiny images, non-finite endpoints) never crash.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <vector>
 
@@ -99,4 +101,51 @@ TEST(Overlay, NonFiniteAndFarAwayEndpointsDoNotCrash) {
   // The far segment crosses the image and is drawn (clipped); the NaN one is skipped.
   EXPECT_EQ(at(out, 20, 20), as_vec(fieldlines::OverlayParams{}.none_colour));
   EXPECT_EQ(at(out, 30, 10), cv::Vec3b(0, 0, 0));
+}
+
+TEST(Overlay, DrawsTheStudiosPaletteOverADarkOutline) {
+  // One palette (fieldlines/data/palette.hpp) for the CLI's --draw and the studio.
+  const fieldlines::OverlayParams defaults;
+  for (const Label l : {Label::Marking, Label::Boundary, Label::None, Label::Unlabelled})
+    EXPECT_EQ(fieldlines::label_colour(l, defaults), fieldlines::bgr(fieldlines::palette::label_rgb(l)))
+        << fieldlines::to_string(l);
+  EXPECT_EQ(defaults.outline_colour, fieldlines::bgr(fieldlines::palette::kOutline));
+
+  // On bright turf, a column across the segment: colour in the middle, outline on both sides.
+  const cv::Mat turf(240, 320, CV_8UC3, cv::Scalar(60, 180, 90));
+  const std::vector<Segment> segments{horizontal(120, Label::None)};
+  fieldlines::OverlayParams params;
+  params.thickness = 3;
+  params.legend = false;
+  // Rows of the column within 30 per channel of the outline colour (edges are anti-aliased).
+  const auto outline_rows = [&](const cv::Mat& out) {
+    std::vector<int> rows;
+    for (int y = 100; y < 140; ++y) {
+      const cv::Vec3b p = at(out, 200, y), o = as_vec(params.outline_colour);
+      if (std::abs(p[0] - o[0]) <= 30 && std::abs(p[1] - o[1]) <= 30 && std::abs(p[2] - o[2]) <= 30) rows.push_back(y);
+    }
+    return rows;
+  };
+  const cv::Mat out = fieldlines::draw_overlay(turf, segments, params);
+  EXPECT_EQ(at(out, 200, 120), as_vec(params.none_colour));
+  const auto rows = outline_rows(out);
+  ASSERT_FALSE(rows.empty());
+  EXPECT_LT(rows.front(), 120);
+  EXPECT_GT(rows.back(), 120);
+  // The endpoint dots have their outline too.
+  int darkest_left_of_the_end = 255 * 3;
+  for (int x = 88; x < 100; ++x) {
+    const cv::Vec3b p = at(out, x, 120);
+    darkest_left_of_the_end = std::min(darkest_left_of_the_end, p[0] + p[1] + p[2]);
+  }
+  EXPECT_LE(darkest_left_of_the_end, 60);
+  // Overridable: no outline, or another colour.
+  params.outline_px = 0;
+  EXPECT_TRUE(outline_rows(fieldlines::draw_overlay(turf, segments, params)).empty());
+  params.outline_px = 2;
+  params.outline_colour = {255, 255, 255};
+  params.none_colour = {1, 2, 3};
+  const cv::Mat white = fieldlines::draw_overlay(turf, segments, params);
+  EXPECT_EQ(at(white, 200, 120), cv::Vec3b(1, 2, 3));
+  EXPECT_TRUE(outline_rows(white).size() >= 2);
 }

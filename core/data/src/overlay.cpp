@@ -25,6 +25,14 @@ cv::Point fixed(cv::Point2f p) {
   return {to_fixed(p.x), to_fixed(p.y)};
 }
 
+// The line and, when dot_radius > 0, a dot at each endpoint (shows where segments split).
+void draw_segment(cv::Mat& canvas, const Segment& s, const cv::Scalar& colour, int thickness, int dot_radius) {
+  cv::line(canvas, fixed(start(s)), fixed(end(s)), colour, thickness, cv::LINE_AA, kShift);
+  if (dot_radius <= 0) return;
+  cv::circle(canvas, fixed(start(s)), dot_radius << kShift, colour, cv::FILLED, cv::LINE_AA, kShift);
+  cv::circle(canvas, fixed(end(s)), dot_radius << kShift, colour, cv::FILLED, cv::LINE_AA, kShift);
+}
+
 void draw_legend(cv::Mat& canvas, std::span<const Segment> segments, const OverlayParams& p) {
   struct Entry {
     Label label;
@@ -53,8 +61,13 @@ void draw_legend(cv::Mat& canvas, std::span<const Segment> segments, const Overl
                                      [&](const Segment& s) { return s.label == e.label; });
     const int y = box.y + pad + static_cast<int>(i) * row + glyph.height;
     const int mid = y - glyph.height / 2;
-    cv::line(canvas, {box.x + pad, mid}, {box.x + pad + swatch, mid}, label_colour(e.label, p),
-             std::max(2, text_thickness + 1), cv::LINE_AA);
+    const int swatch_width = std::max(2, text_thickness + 1);
+    if (p.outline_px > 0) {
+      cv::line(canvas, {box.x + pad, mid}, {box.x + pad + swatch, mid}, p.outline_colour,
+               swatch_width + 2 * p.outline_px, cv::LINE_AA);
+    }
+    cv::line(canvas, {box.x + pad, mid}, {box.x + pad + swatch, mid}, label_colour(e.label, p), swatch_width,
+             cv::LINE_AA);
     cv::putText(canvas, std::string(e.name) + " " + std::to_string(count),
                 {box.x + 2 * pad + swatch, y}, font, scale, {255, 255, 255}, text_thickness, cv::LINE_AA);
   }
@@ -76,18 +89,20 @@ cv::Mat draw_overlay(const cv::Mat& image, std::span<const Segment> segments, co
   cv::Mat canvas = to_bgr8(image).clone();
   const int thickness =
       params.thickness > 0 ? params.thickness : std::max(1, std::min(canvas.cols, canvas.rows) / 240);
+  const int dot_radius = params.endpoints ? thickness + 1 : 0;
   // Unlabelled and "none" first, so field features are drawn on top where they overlap.
   for (const Label pass : {Label::Unlabelled, Label::None, Label::Boundary, Label::Marking}) {
     for (const Segment& s : segments) {
       if (s.label != pass) continue;
       if (!std::isfinite(s.x0) || !std::isfinite(s.y0) || !std::isfinite(s.x1) || !std::isfinite(s.y1))
         continue;
-      const cv::Scalar colour = label_colour(s.label, params);
-      cv::line(canvas, fixed(start(s)), fixed(end(s)), colour, thickness, cv::LINE_AA, kShift);
-      if (params.endpoints) {
-        cv::circle(canvas, fixed(start(s)), (thickness + 1) << kShift, colour, cv::FILLED, cv::LINE_AA, kShift);
-        cv::circle(canvas, fixed(end(s)), (thickness + 1) << kShift, colour, cv::FILLED, cv::LINE_AA, kShift);
+      // Outline then colour, per segment as in the studio: a feature drawn later keeps its
+      // outline where it crosses an earlier segment.
+      if (params.outline_px > 0) {
+        draw_segment(canvas, s, params.outline_colour, thickness + 2 * params.outline_px,
+                     dot_radius > 0 ? dot_radius + params.outline_px : 0);
       }
+      draw_segment(canvas, s, label_colour(s.label, params), thickness, dot_radius);
     }
   }
   if (params.legend) draw_legend(canvas, segments, params);

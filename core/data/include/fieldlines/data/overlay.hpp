@@ -4,17 +4,29 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include "fieldlines/data/palette.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
 
+// A palette colour as OpenCV's BGR.
+inline cv::Scalar bgr(palette::Rgb c) {
+  return {static_cast<double>(c.b), static_cast<double>(c.g), static_cast<double>(c.r)};
+}
+
 struct OverlayParams {
-  // BGR colours picked to stand out from green carpet, white lines and a dark wall.
-  cv::Scalar marking_colour{255, 0, 255};    // magenta
-  cv::Scalar boundary_colour{0, 140, 255};   // orange
-  cv::Scalar none_colour{255, 160, 0};       // azure
-  cv::Scalar unlabelled_colour{160, 160, 160};
+  // BGR; the studio's palette (fieldlines/data/palette.hpp: legible on turf, white lines and a
+  // dark wall) unless overridden.
+  cv::Scalar marking_colour = bgr(palette::kMarking);
+  cv::Scalar boundary_colour = bgr(palette::kBoundary);
+  cv::Scalar none_colour = bgr(palette::kNone);
+  cv::Scalar unlabelled_colour = bgr(palette::kUnlabelled);
+  cv::Scalar outline_colour = bgr(palette::kOutline);
   int thickness = 0;      // line width in pixels; 0 picks one from the image size (>= 1)
+  // A dark border this many pixels wide on each side of every segment and endpoint dot, as the
+  // studio draws (palette.hpp); 0 draws none. Per side rather than palette::kOutlineExtra in
+  // total because OpenCV rounds anti-aliased widths to odd ones: 2 leaves >= 1 solid pixel.
+  int outline_px = 2;
   bool endpoints = true;  // small dots at the endpoints show where segments split
   bool legend = true;     // label names and counts in the top-left corner (skipped if it won't fit)
 };

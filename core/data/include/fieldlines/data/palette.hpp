@@ -1,0 +1,58 @@
+#pragma once
+// The one palette of segment overlays, shared by the studio (gui/model/overlay_style) and the
+// CLI's `--draw` (fieldlines/data/overlay.hpp), so a picture means the same in both.
+//
+// Every segment is drawn in its colour over a dark outline (kOutline, kOutlineExtra px wider).
+// Legibility, as CIE76 Delta-E (sRGB D65), checked by tests/studio/overlay_style_test.cpp against
+// turf greens (50,140,40) (90,180,60) (30,90,40) (130,200,90), white paint and dark walls
+// (30,30,30) (60,55,50):
+//  - the colour alone: marking, boundary and unlabelled >= 85 from every one of them (measured
+//    minimum 86.5, boundary on (60,55,50)); none >= 55 (58.3 on the bleached turf): an agreed
+//    non-feature need not shout;
+//  - the colour against its own outline >= 90 (92.7, boundary), so it reads inside the outline
+//    where the outline melts into the background (dark walls: 8.5 from (30,30,30));
+//  - colour and outline together (the larger of the two differences) >= 75 on every background
+//    (measured 79.95, "none" on the SSL carpet): the outline carries "none" on the bright turfs,
+//    where its yellow alone is 58-64 and the outline 95.
+#include <cstdint>
+
+#include "fieldlines/detect/segment.hpp"
+
+namespace fieldlines::palette {
+
+struct Rgb {
+  std::uint8_t r = 0, g = 0, b = 0;
+  bool operator==(const Rgb&) const = default;
+};
+
+inline constexpr Rgb kMarking{255, 40, 200};    // magenta
+inline constexpr Rgb kBoundary{30, 120, 255};   // blue
+inline constexpr Rgb kNone{255, 210, 0};        // yellow
+inline constexpr Rgb kUnlabelled{255, 70, 20};  // vermilion: still to do, must stand out on turf
+inline constexpr Rgb kQuiet{150, 150, 150};     // grey (the studio's agreed "not a feature")
+inline constexpr Rgb kOutline{10, 10, 10};      // under every segment
+inline constexpr float kOutlineExtra = 3;       // outline width = line width + this, pixels
+
+constexpr Rgb label_rgb(Label label) {
+  switch (label) {
+    case Label::Marking: return kMarking;
+    case Label::Boundary: return kBoundary;
+    case Label::None: return kNone;
+    case Label::Unlabelled: break;
+  }
+  return kUnlabelled;
+}
+
+// What each class is, by the colour transition the classifier looks for (legends of both faces).
+// ASCII arrows: ImGui's default font has no arrow glyphs, OpenCV's Hershey fonts neither.
+constexpr const char* label_transition(Label label) {
+  switch (label) {
+    case Label::Marking: return "green <-> white paint";
+    case Label::Boundary: return "green -> black (field edge)";
+    case Label::None: return "anything else";
+    case Label::Unlabelled: break;
+  }
+  return "not labelled yet";
+}
+
+}  // namespace fieldlines::palette
