@@ -9,23 +9,28 @@
 namespace fieldlines::studio {
 
 namespace {
-constexpr Rgba kMarking{255, 40, 200, 255};    // magenta
-constexpr Rgba kBoundary{30, 120, 255, 255};   // blue
-constexpr Rgba kNone{255, 210, 0, 255};        // yellow
-constexpr Rgba kUnlabelled{255, 70, 20, 255};  // vermilion: still to do, must stand out on turf
-constexpr Rgba kNegative{150, 150, 150, 160};  // translucent grey: agreed "not a feature"
+constexpr Rgba opaque(palette::Rgb c, std::uint8_t alpha = 255) { return {c.r, c.g, c.b, alpha}; }
+constexpr Rgba kMarking = opaque(palette::kMarking);
+constexpr Rgba kBoundary = opaque(palette::kBoundary);
+constexpr Rgba kNone = opaque(palette::kNone);
+constexpr Rgba kUnlabelled = opaque(palette::kUnlabelled);
+constexpr Rgba kNegative = opaque(palette::kQuiet, 160);  // translucent grey: agreed "not a feature"
+
+constexpr LegendEntry class_entry(Label label, const char* text, float thickness = 2) {
+  return {text, {opaque(palette::label_rgb(label)), Stroke::Solid, thickness}, palette::label_transition(label)};
+}
 
 constexpr std::array kLabelLegend{
-    LegendEntry{"marking", {kMarking, Stroke::Solid, 2}},
-    LegendEntry{"boundary", {kBoundary, Stroke::Solid, 2}},
-    LegendEntry{"none", {kNone, Stroke::Solid, 2}},
+    class_entry(Label::Marking, "marking"),
+    class_entry(Label::Boundary, "boundary"),
+    class_entry(Label::None, "none"),
     LegendEntry{"unlabelled", {kUnlabelled, Stroke::Solid, 2}},
     LegendEntry{"proposed (P), Enter accepts", {kMarking, Stroke::Dashed, 2}},
 };
 constexpr std::array kPredictionLegend{
-    LegendEntry{"predicted marking", {kMarking, Stroke::Solid, 2}},
-    LegendEntry{"predicted boundary", {kBoundary, Stroke::Solid, 2}},
-    LegendEntry{"predicted none", {kNone, Stroke::Solid, 1}},
+    class_entry(Label::Marking, "predicted marking"),
+    class_entry(Label::Boundary, "predicted boundary"),
+    class_entry(Label::None, "predicted none", 1),
 };
 constexpr std::array kAgreementLegend{
     LegendEntry{"true positive (class colour)", {kMarking, Stroke::Solid, 2}},
@@ -33,6 +38,9 @@ constexpr std::array kAgreementLegend{
     LegendEntry{"false negative (labelled class)", {kMarking, Stroke::Dotted, 2}},
     LegendEntry{"true negative", {kNegative, Stroke::Solid, 1}},
     LegendEntry{"unlabelled", {kUnlabelled, Stroke::Dotted, 2}},
+    class_entry(Label::Marking, "marking"),
+    class_entry(Label::Boundary, "boundary"),
+    class_entry(Label::None, "none"),
 };
 }  // namespace
 
@@ -40,15 +48,7 @@ constexpr EnumNames<OverlayMode, 3> kModeNames{
     {{{OverlayMode::Labels, "labels"}, {OverlayMode::Prediction, "prediction"}, {OverlayMode::Agreement, "agreement"}}}};
 std::string_view to_string(OverlayMode mode) { return kModeNames.name(mode); }
 
-Rgba label_colour(Label label) {
-  switch (label) {
-    case Label::Marking: return kMarking;
-    case Label::Boundary: return kBoundary;
-    case Label::None: return kNone;
-    case Label::Unlabelled: return kUnlabelled;
-  }
-  return kUnlabelled;
-}
+Rgba label_colour(Label label) { return opaque(palette::label_rgb(label)); }
 
 SegmentStyle style_for(OverlayMode mode, Label truth, Label predicted, Label proposal) {
   if (mode != OverlayMode::Prediction && truth == Label::Unlabelled && proposal != Label::Unlabelled)
@@ -73,6 +73,33 @@ SegmentStyle style_for(OverlayMode mode, Label truth, Label predicted, Label pro
 
 float zoomed_thickness(float thickness, float scale) {
   return thickness * std::clamp(std::sqrt(scale), 1.0f, 4.0f);
+}
+
+DashPattern dash_pattern(Stroke stroke, float thickness) {
+  const float t = std::max(thickness, 0.0f);
+  // A dot a little wider than the line, so its roundness shows; at least 3 px to be seen at all.
+  const float dot = std::max(1.25f * t, 3.0f);
+  const float gap = std::max(1.5f * t, 3.0f);  // wide enough to show the outline between pieces
+  switch (stroke) {
+    case Stroke::Solid: return {1, 1, false};
+    case Stroke::Dashed: return {4 * dot, 4 * dot + gap, false};
+    case Stroke::Dotted: return {dot, dot + gap, true};
+  }
+  return {1, 1, false};
+}
+
+std::vector<DashPiece> dash_pieces(Stroke stroke, float thickness, float length) {
+  if (!(length > 0)) return {};
+  if (stroke == Stroke::Solid) return {{0, length}};
+  const DashPattern p = dash_pattern(stroke, thickness);
+  std::vector<DashPiece> out;
+  if (p.round) {
+    if (length < p.on) return {{0.5f * (length - p.on), 0.5f * (length + p.on)}};  // one dot, centred
+    for (float t = 0; t + p.on <= length; t += p.period) out.push_back({t, t + p.on});
+    return out;
+  }
+  for (float t = 0; t < length; t += p.period) out.push_back({t, std::min(t + p.on, length)});
+  return out;
 }
 
 std::span<const LegendEntry> legend(OverlayMode mode) {
