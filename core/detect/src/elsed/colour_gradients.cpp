@@ -40,6 +40,8 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
   const float sdx = e[2] - e[0], sdy = e[3] - e[1];
   const float along = e[2] > e[0] ? std::atan2(sdy, sdx) : std::atan2(-sdy, -sdx);
   const double normal = wrap_half_turn(along + kPi / 2);
+  const double nx = std::cos(normal), ny = std::sin(normal);
+  const double cos_max = std::cos(params.max_angle_error), sin_max = std::sin(params.max_angle_error);
   // Line through the endpoints, normalised, to re-project pixels onto it.
   float la = e[1] - e[3], lb = e[2] - e[0], lc = e[0] * e[3] - e[1] * e[2];
   const float ln = std::sqrt(la * la + lb * lb);
@@ -61,10 +63,21 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
     const float dist = la * px.x + lb * px.y + lc;
     const float qx = px.x - la * dist, qy = px.y - lb * dist;
     const float gx = sample(maps.dx, w, h, qx, qy), gy = sample(maps.dy, w, h, qx, qy);
-    double angle = std::atan2(gy, gx);
-    if (angle < 0) angle += kPi;
-    if (angle >= kPi) angle -= kPi;
-    orientation_distance(normal, angle) > params.max_angle_error ? ++outliers : ++inliers;
+    // The method's test is orientation_distance(normal, atan2(gy, gx)) > max_angle_error. Its
+    // sign is that of |g| sin(delta - max): |n x g| cos(max) - |n . g| sin(max), a few
+    // multiplications instead of an atan2. Only within 1e-4 rad of the threshold, where the
+    // float atan2's error could matter, is the method's own expression evaluated.
+    const double cross = std::abs(nx * gy - ny * gx), dot = std::abs(nx * gx + ny * gy);
+    const double side = cross * cos_max - dot * sin_max;
+    const double margin = 1e-4 * (std::abs(gx) + std::abs(gy));
+    bool outlier = side > 0;
+    if (std::abs(side) <= margin) {
+      double angle = std::atan2(gy, gx);
+      if (angle < 0) angle += kPi;
+      if (angle >= kPi) angle -= kPi;
+      outlier = orientation_distance(normal, angle) > params.max_angle_error;
+    }
+    outlier ? ++outliers : ++inliers;
 
     if (px.x < 1 || px.x >= w - 1 || px.y < 1 || px.y >= h - 1) continue;
     for (int r = 0; r < 3; ++r) {
