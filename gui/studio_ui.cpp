@@ -6,6 +6,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "gui/missed_keys.hpp"
 #include "gui/model/shortcuts.hpp"
 #include "gui/panels/panels.hpp"
 
@@ -125,6 +126,7 @@ void draw_status_bar(const studio::StudioController& controller, const UiState& 
 }  // namespace
 
 void draw_studio(studio::StudioController& controller, UiState& ui, std::span<const KeyPress> keys) {
+  const MissedKeyReplay missed_keys(keys);  // text fields get the quick taps ImGui 1.86 loses
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(viewport->WorkPos);
   ImGui::SetNextWindowSize(viewport->WorkSize);
