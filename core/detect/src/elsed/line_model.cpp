@@ -41,8 +41,7 @@ void LineModel::slide_two(const std::vector<Pixel>& chain) {
     refit(chain, first_index_);
   } else {
     accumulate(prev_last_, +1);
-    accumulate(last_, +1);
-    update_equation();
+    accumulate(last_, +1);  // the equation waits for fits(), which mostly needs only the sums
   }
 }
 
@@ -78,30 +77,28 @@ double LineModel::fit_error(const std::vector<Pixel>& chain) const {
   return sum / n_;
 }
 
-bool LineModel::fits(const std::vector<Pixel>& chain, double max_error) const {
-  // sum (a u + b v + c)^2 expanded over the moments, in coordinates centred on the first pixel
-  // so the terms stay near the result (the exact integer moments make the centring exact).
+bool LineModel::fits(const std::vector<Pixel>& chain, double max_error) {
+  // The regression line passes through the centroid, so the mean squared distance is
+  //   cuu (cuu cvv - cuv^2) / (n^2 (cuv^2 + cuu^2))
+  // with c.. = n^2 times the centred second moments: exact integers, the difference included.
   const std::int64_t n = n_;
-  const std::int64_t u0 = horizontal_ ? first_.x : first_.y, v0 = horizontal_ ? first_.y : first_.x;
-  const auto su = static_cast<double>(sx_ - n * u0), sv = static_cast<double>(sy_ - n * v0);
-  const auto suu = static_cast<double>(sxx_ - 2 * u0 * sx_ + n * u0 * u0);
-  const auto svv = static_cast<double>(syy_ - 2 * v0 * sy_ + n * v0 * v0);
-  const auto suv = static_cast<double>(sxy_ - u0 * sy_ - v0 * sx_ + n * u0 * v0);
-  const double a = horizontal_ ? eq_[0] : eq_[1], b = horizontal_ ? eq_[1] : eq_[0];
-  const double c = eq_[2] + a * static_cast<double>(u0) + b * static_cast<double>(v0);
-  const double dn = static_cast<double>(n);
-  const double t_uu = a * a * suu, t_vv = b * b * svv, t_cc = dn * c * c;
-  const double t_uv = 2 * a * b * suv, t_uc = 2 * a * c * su, t_vc = 2 * b * c * sv;
-  const double sum = t_uu + t_vv + t_cc + t_uv + t_uc + t_vc;
-  // Both this and the loop are off the exact sum by a few ulps of the terms' magnitudes and of
-  // n (|c| + |x| + |y|)^2 (every window pixel lies within n steps of the first): 1e-12 of that
-  // is thousands of times wider than either error, and still decides all but ties.
-  const double k = std::abs(eq_[2]) + std::abs(first_.x) + std::abs(first_.y) + 2 * dn + 1;
-  const double margin =
-      1e-12 * (t_uu + t_vv + t_cc + std::abs(t_uv) + std::abs(t_uc) + std::abs(t_vc) + dn * k * k);
-  const double limit = max_error * dn;
-  if (sum < limit - margin) return true;
-  if (sum > limit + margin) return false;
+  const std::int64_t cuu = n * sxx_ - sx_ * sx_, cvv = n * syy_ - sy_ * sy_, cuv = n * sxy_ - sx_ * sy_;
+  std::int64_t uv2 = 0, uuvv = 0;
+  const bool exact = cuu > 0 && !__builtin_mul_overflow(cuu, cvv, &uuvv) && !__builtin_mul_overflow(cuv, cuv, &uv2);
+  if (exact) {
+    const auto u = static_cast<double>(cuu), w = static_cast<double>(cuv), dn = static_cast<double>(n);
+    const double error = u * static_cast<double>(uuvv - uv2) / (dn * dn * (w * w + u * u));
+    // The loop is off the exact value by a few ulps of n (|x| + |y| + |c|) (each pixel lies
+    // within n steps of the first, the line passes through their centroid); this is off by a
+    // few ulps of itself. 1e-10 of that is far wider than both and still decides all but ties.
+    const double k = 2.0 * (std::abs(first_.x) + std::abs(first_.y)) + 4 * dn + 1;
+    const double margin = 1e-10 * k * (1 + max_error);
+    if (error > max_error + margin) return false;  // the equation may stay stale: a new window follows
+    update_equation();
+    if (error < max_error - margin) return true;
+  } else {
+    update_equation();
+  }
   return fit_error(chain) < max_error;
 }
 

@@ -21,7 +21,8 @@ class LineModel {
  public:
   // Fits chain[start..end) from scratch (at least 2 pixels).
   void init(const std::vector<Pixel>& chain, int start);
-  // Slides the fitted window two pixels forward along the chain (used while searching for a fit).
+  // Slides the fitted window two pixels forward along the chain (used while searching for a
+  // fit). Leaves equation() stale until fits() returns true; nothing else reads it meanwhile.
   void slide_two(const std::vector<Pixel>& chain);
   void add(Pixel p, int index_in_chain, bool at_end);
   void remove_endpoint(bool at_end);
@@ -36,7 +37,8 @@ class LineModel {
   double fit_error(const std::vector<Pixel>& chain) const;
   // fit_error(chain) < max_error, decided from the running sums in O(1); only when that is
   // within rounding of max_error does it run the O(n) loop, so the answer is always the loop's.
-  bool fits(const std::vector<Pixel>& chain, double max_error) const;
+  // Brings equation() up to date whenever it returns true.
+  bool fits(const std::vector<Pixel>& chain, double max_error);
 
   bool horizontal() const { return horizontal_; }
   std::uint32_t count() const { return n_; }
