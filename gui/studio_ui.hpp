@@ -1,6 +1,7 @@
 #pragma once
 // The studio's whole window: the image canvas on the left, tabbed panels on the right, a status
 // bar, and the keyboard shortcuts. Draws controller state and forwards user actions to it.
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -30,10 +31,17 @@ struct UiState {
   bool panel_request_pending = true;
   Panel shown_panel = Panel::Label;
   int image_filter = 0;  // 0 all, 1 not fully labelled, 2 with errors, 3 test split
+  int image_order = 0;   // Images tab: 0 file order, 1 least certain first (review order)
   TrainParams train_params;
   int scatter_x = 0, scatter_y = 1;  // threshold dimensions of the particle scatter
-  std::string export_path = "thresholds.json";
+  // Train tab: what Apply did ("applied: marking P .. R .. on the test split"), shown while the
+  // applied thresholds are still the current ones.
+  std::string applied_message;
+  std::optional<Thresholds> applied_thresholds;
+  std::string export_path;          // as typed; set to the project's default when it opens
+  std::string export_path_project;  // the project file that default was made for
   std::string export_message;
+  bool export_failed = false;       // export_message is an error
   std::string export_preview;
   std::vector<std::string> recent_projects;
   std::string open_request;    // a project the user asked to open (the main loop swaps sessions)

@@ -30,6 +30,8 @@ Project write_bench_scene(const std::filesystem::path& folder, const BenchSceneP
     s.grad_x = {grad(rng), grad(rng), grad(rng)};
     s.grad_y = {grad(rng), grad(rng), grad(rng)};
     s.label = static_cast<Label>(static_cast<int>(rng() % 4) - 1);
+    // Unlabelled segments carry a proposal, so the frame draws the review loop's dashed strokes.
+    entry.proposals.push_back(s.label == Label::Unlabelled ? static_cast<Label>(rng() % 3) : Label::Unlabelled);
     cv::line(image, {static_cast<int>(s.x0), static_cast<int>(s.y0)}, {static_cast<int>(s.x1), static_cast<int>(s.y1)},
              cv::Scalar(235, 235, 235), 3);
     entry.segments.push_back(s);

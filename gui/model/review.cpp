@@ -1,6 +1,7 @@
 // The studio's review loop: propose labels, accept an image's proposals with one key, and
 // visit the least certain segments first. Part of StudioController, in its own file because
 // it is one concept: what a person reviews next.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -94,6 +95,15 @@ std::optional<StudioController::Uncertain> StudioController::least_certain(std::
 double StudioController::image_uncertainty(std::size_t image) const {
   const auto u = image < image_count() ? least_certain(image) : std::nullopt;
   return u ? u->margin : std::numeric_limits<double>::infinity();
+}
+
+std::vector<std::size_t> StudioController::images_by_uncertainty() const {
+  std::vector<std::pair<double, std::size_t>> keyed;
+  for (std::size_t i = 0; i < image_count(); ++i) keyed.emplace_back(image_uncertainty(i), i);
+  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::size_t> order;
+  for (const auto& [margin, image] : keyed) order.push_back(image);
+  return order;
 }
 
 std::optional<SegmentRef> StudioController::focus_most_uncertain() {

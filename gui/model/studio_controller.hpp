@@ -155,6 +155,9 @@ class StudioController {
   // How close the image's least certain unlabelled segment is to flipping (decision margin,
   // fieldlines/train/review.hpp); infinity when it has none. Smaller = review first.
   double image_uncertainty(std::size_t image) const;
+  // Every image, least certain first (the review order); images with nothing left to review
+  // last; ties in file order.
+  std::vector<std::size_t> images_by_uncertainty() const;
   // Selects the image of the project's least certain unlabelled segment, hovers it and asks the
   // view to centre on it (take_focus_request); empty when nothing is left to review.
   std::optional<SegmentRef> focus_most_uncertain();

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
@@ -18,6 +19,11 @@ void draw_images_panel(studio::StudioController& controller, UiState& ui) {
   const std::string next_with_errors = "Next with errors (" + studio::key_for(studio::Action::NextImageWithErrors) + ")";
   if (ImGui::Button(next_with_errors.c_str())) controller.next_image_with_errors();
   ImGui::Combo("filter", &ui.image_filter, "all\0not fully labelled\0with errors\0test split\0");
+  ImGui::Combo("order", &ui.image_order, "file order\0least certain first\0");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("least certain first: images whose unlabelled segments lie closest to a\n"
+                      "threshold boundary come first (Tab jumps to the single least certain one)");
+  }
   ImGui::Text("%zu labelled segments in %zu images", controller.labelled_total(), controller.image_count());
   if (!ui.recent_projects.empty() && ImGui::CollapsingHeader("Recent projects")) {
     for (const std::string& recent : ui.recent_projects) {
@@ -28,7 +34,13 @@ void draw_images_panel(studio::StudioController& controller, UiState& ui) {
   }
   ImGui::Separator();
   ImGui::BeginChild("image list");
-  for (std::size_t i = 0; i < controller.image_count(); ++i) {
+  std::vector<std::size_t> order(controller.image_count());
+  if (ui.image_order == 1) {
+    order = controller.images_by_uncertainty();
+  } else {
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  }
+  for (const std::size_t i : order) {
     const studio::ImageProgress p = controller.progress(i);
     const bool keep = ui.image_filter == 0 || (ui.image_filter == 1 && p.labelled < p.total) ||
                       (ui.image_filter == 2 && p.errors > 0) || (ui.image_filter == 3 && controller.is_test_image(i));

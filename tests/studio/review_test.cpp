@@ -105,3 +105,24 @@ TEST(StudioReview, LabelsTakeOverFromLabelFreeProposalsPerClass) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(StudioReview, ImageListOrderPutsTheLeastCertainFirstAndReviewedImagesLast) {
+  Review r;
+  fs::StudioController& c = *r.controller;
+  c.propose();
+  std::vector<std::size_t> order = c.images_by_uncertainty();
+  ASSERT_EQ(order.size(), 3u);
+  for (std::size_t k = 1; k < order.size(); ++k)
+    EXPECT_LE(c.image_uncertainty(order[k - 1]), c.image_uncertainty(order[k]));
+  // Review the least certain image: with nothing left on it, it moves to the end.
+  const std::size_t first = order.front();
+  c.select_image(first);
+  c.accept_proposals();
+  order = c.images_by_uncertainty();
+  EXPECT_EQ(order.back(), first);
+  EXPECT_TRUE(std::isinf(c.image_uncertainty(first)));
+}
+
+}  // namespace
