@@ -3,12 +3,15 @@
 // a third of them a few microseconds after the save's temporary file appears (inotify). After
 // every kill the project file must load and be the old project or a complete newer one: same
 // images and segments, only the driven segment's label changed. The next start reopens it.
+// The review loop is killed the same way: P (propose), Enter (accept, with auto-train
+// retraining in the background and saving its thresholds) and Ctrl+Z, over and over.
 #include <gtest/gtest.h>
 
 #include <signal.h>
 #include <sys/inotify.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -95,6 +98,57 @@ TEST_F(StudioCrash, KilledDuringAutosavesLeavesOldOrCompleteProject) {
               kKills, mid_save, changed);
   // Most kills come long after the first save, so the label must have reached the disk.
   EXPECT_GT(changed, kKills / 2);
+}
+
+TEST_F(StudioCrash, KilledWhileProposingAcceptingAndRetrainingLeavesAValidProject) {
+  constexpr int kReviewKills = 8;
+  const fieldlines::Project original = fieldlines::Project::load(project_);
+  const std::string temp_prefix = fieldlines::temporary_prefix(project_);
+  std::mt19937 rng(20261201);
+  std::uniform_int_distribution<int> anywhere_ms(300, 2500), in_save_us(0, 100);
+  int progressed = 0;
+  std::size_t most_labels = 0;
+  for (int k = 0; k < kReviewKills; ++k) {
+    auto studio = start_studio();
+    ASSERT_TRUE(studio->running()) << log();
+    studio_test::Child keys({"/usr/bin/xdotool", "key", "--delay", "40", "--repeat", "100", "p", "Return", "Return",
+                             "ctrl+z", "Return"},
+                            {"DISPLAY=" + display_.name}, dir() / "xdotool.log");
+    if (k % 2 == 1) {
+      const int watch = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+      ASSERT_GE(watch, 0);
+      ASSERT_GE(::inotify_add_watch(watch, dir().c_str(), IN_CREATE), 0);
+      std::this_thread::sleep_for(300ms);
+      EXPECT_TRUE(wait_for_creation(watch, temp_prefix, 10s)) << "no save started";
+      std::this_thread::sleep_for(std::chrono::microseconds(in_save_us(rng)));
+      ::close(watch);
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(anywhere_ms(rng)));
+    }
+    studio->kill(SIGKILL);
+    studio->wait();
+    keys.kill(SIGKILL);
+
+    fieldlines::Project now;
+    ASSERT_NO_THROW(now = fieldlines::Project::load(project_)) << "kill " << k << " left a project that does not load";
+    ASSERT_EQ(now.images.size(), original.images.size());
+    for (std::size_t i = 0; i < now.images.size(); ++i) {
+      const auto& a = now.images[i].segments;
+      const auto& b = original.images[i].segments;
+      ASSERT_EQ(a.size(), b.size()) << "kill " << k << ", image " << i;
+      // Proposals are all or nothing per image (an accepted one stays, for undo, under its label).
+      const auto& proposals = now.images[i].proposals;
+      EXPECT_TRUE(proposals.empty() || proposals.size() == a.size()) << "kill " << k << ", image " << i;
+      for (std::size_t j = 0; j < a.size(); ++j) {
+        EXPECT_FLOAT_EQ(a[j].x0, b[j].x0);
+      }
+    }
+    most_labels = std::max(most_labels, now.labelled_count());
+    progressed += now.labelled_count() > 0;
+  }
+  std::printf("studio review loop: %d kills, %d left accepted labels on disk (at most %zu)\n", kReviewKills,
+              progressed, most_labels);
+  EXPECT_GT(progressed, kReviewKills / 2);
 }
 
 }  // namespace
