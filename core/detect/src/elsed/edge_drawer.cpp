@@ -86,7 +86,7 @@ void EdgeDrawer::draw_tree(Pixel anchor, std::vector<Pixel>& anchor_pixels, bool
     int idx = px.y * width + px.x;
 
     while (static_cast<int>(outliers_.size()) <= kMaxOutliers) {
-      if (!step_along_gradient(dir, *maps_, px, last)) break;
+      if (!step_along_gradient(dir, *maps_, px, last, marks_->data())) break;
       idx = px.y * width + px.x;
       const Mark m = (*marks_)[idx];
       hit_owned = m == Mark::Inlier || m == Mark::Junction || m == Mark::Edge;
