@@ -33,6 +33,26 @@ std::optional<std::size_t> nearest_segment(std::span<const Segment> segments, co
   return best;
 }
 
+std::vector<std::size_t> segments_under(std::span<const Segment> segments, const ViewTransform& view, Vec2 cursor,
+                                        float max_distance_px) {
+  struct Hit {
+    float distance;
+    std::size_t index;
+  };
+  std::vector<Hit> hits;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const ScreenSegment s = to_screen(segments[i], view);
+    const float d = distance_to_segment(cursor, s.a, s.b);
+    if (d <= max_distance_px) hits.push_back({d, i});
+  }
+  std::sort(hits.begin(), hits.end(),
+            [](const Hit& a, const Hit& b) { return a.distance < b.distance || (a.distance == b.distance && a.index < b.index); });
+  std::vector<std::size_t> out;
+  out.reserve(hits.size());
+  for (const Hit& h : hits) out.push_back(h.index);
+  return out;
+}
+
 bool segment_intersects_rect(Vec2 a, Vec2 b, const Rect& rect) {
   const Rect r = rect.normalised();
   // Liang-Barsky clipping: the parametric interval of the segment inside every slab.

@@ -27,6 +27,12 @@ float distance_to_segment(Vec2 p, Vec2 a, Vec2 b);
 std::optional<std::size_t> nearest_segment(std::span<const Segment> segments, const ViewTransform& view,
                                            Vec2 cursor, float max_distance_px);
 
+// Every segment within `max_distance_px` of `cursor`, nearest first (ties: lower index first),
+// so overlapping segments (the two edges of a painted line lie within a pixel) can all be
+// reached; the first is nearest_segment's.
+std::vector<std::size_t> segments_under(std::span<const Segment> segments, const ViewTransform& view, Vec2 cursor,
+                                        float max_distance_px);
+
 // Indices (ascending) of the segments with any point inside `screen_rect` (either corner order).
 std::vector<std::size_t> segments_in_rect(std::span<const Segment> segments, const ViewTransform& view,
                                           const Rect& screen_rect);

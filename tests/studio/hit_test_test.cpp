@@ -87,3 +87,26 @@ TEST(HitTest, SegmentRectIntersectionEdgeCases) {
   EXPECT_FALSE(fs::segment_intersects_rect({-5, 4}, {4, -5}, r));   // cuts past the corner
   EXPECT_TRUE(fs::segment_intersects_rect({10, 10}, {20, 20}, r));  // touches the corner
 }
+
+TEST(HitTest, SegmentsUnderListsEveryOverlappingSegmentNearestFirst) {
+  // The two edges of a painted line half a pixel apart, another line 5 px away, one far off.
+  const std::vector<Segment> segs{seg(0, 20, 100, 20), seg(0, 10, 100, 10), seg(0, 10.5f, 100, 10.5f),
+                                  seg(0, 60, 100, 60)};
+  fs::ViewTransform view;
+  view.set(2, {0, 0});  // 2 screen px per image px: the edges are 1 screen pixel apart
+  const fs::Vec2 on_second = (fs::to_screen(segs[2], view).a + fs::to_screen(segs[2], view).b) * 0.5f;
+  EXPECT_EQ(fs::segments_under(segs, view, on_second, 8), (std::vector<std::size_t>{2, 1}));
+  EXPECT_EQ(fs::segments_under(segs, view, on_second, 30), (std::vector<std::size_t>{2, 1, 0}));
+  EXPECT_TRUE(fs::segments_under(segs, view, {50, 300}, 8).empty());
+  // Its first is always nearest_segment's, ties included (identical segments: lower index first).
+  const std::vector<Segment> twins{seg(0, 10, 100, 10), seg(0, 10, 100, 10)};
+  EXPECT_EQ(fs::segments_under(twins, view, on_second, 8), (std::vector<std::size_t>{0, 1}));
+  for (const fs::Vec2 p : {on_second, fs::Vec2{40, 30}, fs::Vec2{100, 50}}) {
+    const auto all = fs::segments_under(segs, view, p, 12);
+    const auto one = fs::nearest_segment(segs, view, p, 12);
+    ASSERT_EQ(all.empty(), !one.has_value());
+    if (one) {
+      EXPECT_EQ(all.front(), *one);
+    }
+  }
+}
