@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
 #include "gui/model/hit_test.hpp"
+#include "gui/model/shortcuts.hpp"
 
 namespace fieldlines::gui {
 
@@ -30,12 +32,14 @@ void draw_styled_line(ImDrawList* draw, ImVec2 a, ImVec2 b, const studio::Segmen
   const float dx = b.x - a.x, dy = b.y - a.y;
   const float length = std::hypot(dx, dy);
   if (length < 1e-3f) return;
-  const float on = style.stroke == studio::Stroke::Dashed ? 8.0f : 2.0f;
-  const float period = style.stroke == studio::Stroke::Dashed ? 13.0f : 5.0f;
-  for (float t = 0; t < length; t += period) {
-    const float t1 = std::min(t + on, length);
-    draw->AddLine({a.x + dx * t / length, a.y + dy * t / length}, {a.x + dx * t1 / length, a.y + dy * t1 / length},
-                  col, style.thickness);
+  const auto at = [&](float t) { return ImVec2{a.x + dx * t / length, a.y + dy * t / length}; };
+  const bool round = studio::dash_pattern(style.stroke, style.thickness).round;
+  for (const studio::DashPiece& piece : studio::dash_pieces(style.stroke, style.thickness, length)) {
+    if (round) {
+      draw->AddCircleFilled(at(0.5f * (piece.from + piece.to)), 0.5f * (piece.to - piece.from), col);
+    } else {
+      draw->AddLine(at(piece.from), at(piece.to), col, style.thickness);
+    }
   }
 }
 
@@ -94,9 +98,13 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
 
   const auto segments = controller.segments();
   const auto predictions = controller.predictions();
-  // Hover: nearest segment in screen pixels (none while dragging a rectangle or panning).
-  std::optional<std::size_t> under;
-  if (hovered && !state.rect_active) under = studio::nearest_segment(segments, state.view, mouse, state.pick_radius_px);
+  // Hover: the segments under the cursor in screen pixels, nearest first; Space cycles through
+  // them (none while dragging a rectangle or panning).
+  std::vector<std::size_t> candidates;
+  if (hovered && !state.rect_active) {
+    candidates = studio::segments_under(segments, state.view, mouse, state.pick_radius_px);
+  }
+  const std::optional<std::size_t> under = state.cycle.update(controller.current(), candidates, segments);
   if (under) state.focus.reset();
   const bool focus_here = state.focus && state.focus_image == controller.current() && *state.focus < segments.size();
   if (under || (hovered && !state.rect_active && !focus_here)) {
@@ -142,19 +150,24 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
     for (std::size_t i = 0; i < segments.size(); ++i) {
       const auto s = studio::to_screen(segments[i], state.view);
       auto style = studio::style_for(state.mode, segments[i].label, predictions[i], controller.proposal(i));
-      style.thickness = studio::zoomed_thickness(style.thickness, state.view.scale());
+      style.thickness = state.settings.segment_width(style.thickness, state.view.scale());
       draw_styled_line(draw, im(s.a), im(s.b), style);
     }
   }
   if (const auto h = controller.hovered()) {
-    // Highlight: a white halo under a redraw of the segment, thicker.
+    // Highlight, unmistakable over any background and among overlapping segments: a black then a
+    // white halo under a wider solid redraw, and both endpoints ringed.
     const auto s = studio::to_screen(segments[*h], state.view);
-    auto style = studio::style_for(state.mode, segments[*h].label, predictions[*h]);
-    style.thickness = studio::zoomed_thickness(style.thickness, state.view.scale());
-    draw->AddLine(im(s.a), im(s.b), IM_COL32(255, 255, 255, 230), style.thickness + 5);
-    style.thickness += 2;
-    style.stroke = studio::Stroke::Solid;
-    draw_styled_line(draw, im(s.a), im(s.b), style);
+    const auto style = studio::style_for(state.mode, segments[*h].label, predictions[*h], controller.proposal(*h));
+    const float width = state.settings.segment_width(style.thickness, state.view.scale()) + 2;
+    draw->AddLine(im(s.a), im(s.b), colour(studio::kOutline), width + 8);
+    draw->AddLine(im(s.a), im(s.b), IM_COL32(255, 255, 255, 255), width + 4);
+    draw->AddLine(im(s.a), im(s.b), colour(style.colour), width);  // solid: the class colour shows whole
+    const float ring = 0.5f * width + 4;
+    for (const Vec2 end : {s.a, s.b}) {
+      draw->AddCircle(im(end), ring, colour(studio::kOutline), 0, 4);
+      draw->AddCircle(im(end), ring, IM_COL32(255, 255, 255, 255), 0, 2);
+    }
   }
   if (state.rect_active) {
     draw->AddRectFilled(im(state.rect_start), im(mouse), IM_COL32(255, 255, 255, 40));
@@ -164,6 +177,10 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
 
   if (const auto h = controller.hovered(); h && hovered && !state.rect_active) {
     ImGui::BeginTooltip();
+    if (const auto n = state.cycle.candidates().size(); n > 1 && state.cycle.hovered() == h) {
+      ImGui::TextColored({1, 0.85f, 0.3f, 1}, "%zu of %zu under cursor (%s: next)", state.cycle.position() + 1, n,
+                         studio::key_for(studio::Action::NextUnderCursor).c_str());
+    }
     segment_tooltip(segments[*h], predictions[*h], controller.features(*h));
     ImGui::EndTooltip();
   }

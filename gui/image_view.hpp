@@ -1,12 +1,14 @@
 #pragma once
-#include <optional>
 // The central canvas: the current image as a texture, the segments drawn over it, and the mouse
 // gestures that become controller commands (hover, click to label, drag a rectangle, pan, zoom).
 #include <cstddef>
+#include <optional>
 
 #include "gui/gl_texture.hpp"
+#include "gui/model/hover_cycle.hpp"
 #include "gui/model/overlay_style.hpp"
 #include "gui/model/studio_controller.hpp"
+#include "gui/model/view_settings.hpp"
 #include "gui/model/view_transform.hpp"
 
 namespace fieldlines::gui {
@@ -18,6 +20,8 @@ struct ImageViewState {
   float pick_radius_px = 8;      // hover reach, in screen pixels at every zoom
   bool fit_requested = true;
   bool show_segments = true;
+  studio::ViewSettings settings;  // line width (Label tab)
+  studio::HoverCycle cycle;       // which of the segments under the cursor is hovered (Space: next)
   GlTexture texture;
   std::size_t texture_generation = static_cast<std::size_t>(-1);
   bool rect_active = false;

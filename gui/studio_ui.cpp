@@ -31,7 +31,7 @@ static_assert(static_cast<int>(studio::Key::B) == GLFW_KEY_B && static_cast<int>
 static_assert(static_cast<int>(studio::Key::Left) == GLFW_KEY_LEFT && static_cast<int>(studio::Key::Right) == GLFW_KEY_RIGHT);
 static_assert(static_cast<int>(studio::Key::F1) == GLFW_KEY_F1 && static_cast<int>(studio::Key::F6) == GLFW_KEY_F6);
 static_assert(static_cast<int>(studio::Key::Enter) == GLFW_KEY_ENTER && static_cast<int>(studio::Key::Tab) == GLFW_KEY_TAB);
-static_assert(static_cast<int>(studio::Key::P) == GLFW_KEY_P);
+static_assert(static_cast<int>(studio::Key::P) == GLFW_KEY_P && static_cast<int>(studio::Key::Space) == GLFW_KEY_SPACE);
 static_assert(static_cast<int>(Panel::Count) == 6, "the shortcut table's tabs are F1..F6");
 
 void handle_shortcuts(studio::StudioController& controller, UiState& ui, std::span<const KeyPress> keys) {
@@ -46,6 +46,7 @@ void handle_shortcuts(studio::StudioController& controller, UiState& ui, std::sp
       case studio::Action::LabelBoundary: controller.label_hovered(Label::Boundary); break;
       case studio::Action::LabelNone: controller.label_hovered(Label::None); break;
       case studio::Action::LabelClear: controller.label_hovered(Label::Unlabelled); break;
+      case studio::Action::NextUnderCursor: ui.image_view.cycle.next(); break;
       case studio::Action::Fit: ui.image_view.fit_requested = true; break;
       case studio::Action::PreviousImage: controller.previous_image(); break;
       case studio::Action::NextImage: controller.next_image(); break;

@@ -14,6 +14,7 @@ constexpr std::array kShortcuts{
     Shortcut{key(Key::B), Action::LabelBoundary, "label the hovered segment boundary"},
     Shortcut{key(Key::N), Action::LabelNone, "label the hovered segment none"},
     Shortcut{key(Key::C), Action::LabelClear, "clear the hovered segment's label"},
+    Shortcut{key(Key::Space), Action::NextUnderCursor, "hover the next segment under the cursor (overlapping edges; the tooltip says 1 of 2)"},
     Shortcut{{}, Action::Pointer, "label the hovered segment with the brush (Label tab; marking by default)", "left click"},
     Shortcut{{}, Action::Pointer, "label the hovered segment none", "right click"},
     Shortcut{{}, Action::Pointer, "label every segment the rectangle touches with the brush", "left drag"},
@@ -46,6 +47,7 @@ std::string key_name(Key k) {
     case Key::Right: return "Right";
     case Key::Enter: return "Enter";
     case Key::Tab: return "Tab";
+    case Key::Space: return "Space";
     default: break;
   }
   const int code = static_cast<int>(k);

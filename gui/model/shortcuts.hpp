@@ -15,6 +15,7 @@ namespace fieldlines::studio {
 enum class Key : int {
   None = 0,  // a mouse input: handled by the image view, listed for the help
   B = 'B', C = 'C', E = 'E', F = 'F', M = 'M', N = 'N', P = 'P', Q = 'Q', T = 'T', Y = 'Y', Z = 'Z',
+  Space = ' ',
   Enter = 257, Tab = 258, Right = 262, Left = 263,
   F1 = 290, F2, F3, F4, F5, F6,
 };
@@ -27,6 +28,7 @@ struct Chord {
 
 enum class Action {
   LabelMarking, LabelBoundary, LabelNone, LabelClear,  // the hovered segment
+  NextUnderCursor,  // hover the next of the overlapping segments under the cursor
   Fit, PreviousImage, NextImage, NextImageWithErrors,
   Propose, AcceptProposals, FocusUncertain,  // the review loop
   Undo, Redo, ToggleTraining, ShowTab, Quit,

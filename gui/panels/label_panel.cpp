@@ -25,18 +25,25 @@ void draw_legend(studio::OverlayMode mode) {
     ImGui::Dummy({46, h});
     ImGui::SameLine();
     ImGui::TextUnformatted(entry.text.data(), entry.text.data() + entry.text.size());
+    if (!entry.detail.empty()) {  // the class's colour transition
+      ImGui::SameLine();
+      ImGui::TextDisabled("- %.*s", static_cast<int>(entry.detail.size()), entry.detail.data());
+    }
   }
 }
 
 void draw_label_panel(studio::StudioController& controller, UiState& ui) {
   ImGui::TextUnformatted("Left click / rectangle labels as:");
   int brush = static_cast<int>(ui.image_view.brush);
-  ImGui::RadioButton(captioned("marking", studio::Action::LabelMarking).c_str(), &brush, static_cast<int>(Label::Marking));
+  const auto brush_button = [&](const char* name, studio::Action action, Label label) {
+    ImGui::RadioButton(captioned(name, action).c_str(), &brush, static_cast<int>(label));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s: %s", name, palette::label_transition(label));
+  };
+  brush_button("marking", studio::Action::LabelMarking, Label::Marking);
   ImGui::SameLine();
-  ImGui::RadioButton(captioned("boundary", studio::Action::LabelBoundary).c_str(), &brush,
-                     static_cast<int>(Label::Boundary));
+  brush_button("boundary", studio::Action::LabelBoundary, Label::Boundary);
   ImGui::SameLine();
-  ImGui::RadioButton(captioned("none", studio::Action::LabelNone).c_str(), &brush, static_cast<int>(Label::None));
+  brush_button("none", studio::Action::LabelNone, Label::None);
   ui.image_view.brush = static_cast<Label>(brush);
 
   ImGui::Separator();
@@ -49,6 +56,13 @@ void draw_label_panel(studio::StudioController& controller, UiState& ui) {
   ImGui::RadioButton("agreement", &mode, static_cast<int>(studio::OverlayMode::Agreement));
   ui.image_view.mode = static_cast<studio::OverlayMode>(mode);
   ImGui::Checkbox("show segments", &ui.image_view.show_segments);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  float line_width = ui.image_view.settings.line_width;
+  if (ImGui::SliderFloat("line width", &line_width, studio::ViewSettings::kMinLineWidth,
+                         studio::ViewSettings::kMaxLineWidth, "%.1fx")) {
+    ui.image_view.settings.set_line_width(line_width);
+  }
   draw_legend(ui.image_view.mode);
 
   ImGui::Separator();

@@ -99,6 +99,9 @@ TEST(Shortcuts, LookupAsTheWindowSeesKeys) {
   EXPECT_EQ(action_of({Key::Right}, true), Action::NextImage);  // arrows repeat while held
   EXPECT_EQ(action_of({Key::M}, true), std::nullopt);           // a held M labels once
   EXPECT_EQ(action_of({Key::None}), std::nullopt);
+  EXPECT_EQ(action_of({Key::Space}), Action::NextUnderCursor);  // overlapping segments
+  EXPECT_EQ(action_of({Key::Space}, true), std::nullopt);        // one step per press
+  EXPECT_EQ(fs::key_for(Action::NextUnderCursor), "Space");
   const fs::Shortcut* tab = fs::find_shortcut({Key::F4});
   ASSERT_NE(tab, nullptr);
   EXPECT_EQ(tab->action, Action::ShowTab);
