@@ -7,18 +7,26 @@
 
 namespace fieldlines::gui {
 
+namespace {
+bool is_modifier(int key) { return key >= GLFW_KEY_LEFT_SHIFT && key <= GLFW_KEY_RIGHT_SUPER; }
+}  // namespace
+
 MissedKeyReplay::MissedKeyReplay(std::span<const KeyPress> keys) {
   ImGuiIO& io = ImGui::GetIO();
   ctrl_ = io.KeyCtrl, shift_ = io.KeyShift, alt_ = io.KeyAlt, super_ = io.KeySuper, mods_ = io.KeyMods;
   const int last = static_cast<int>(IM_ARRAYSIZE(io.KeysDown));
   for (const KeyPress& k : keys) {
-    // Down at NewFrame (duration >= 0): ImGui saw this press itself.
-    if (k.repeat || k.key < 0 || k.key >= last || io.KeysDownDuration[k.key] >= 0) continue;
-    if (std::find(replayed_.begin(), replayed_.end(), k.key) != replayed_.end()) continue;
-    replayed_.push_back(k.key);
-    io.KeysDown[k.key] = true;
-    io.KeysDownDuration[k.key] = 0;  // "pressed this frame" to IsKeyPressed
-    // The modifiers may have been released within the same frame too (Ctrl up right after A).
+    // Duration > 0: held since an earlier frame, ImGui has this press. A modifier's own press
+    // carries the modifiers from before it; the key pressed with it tells them.
+    if (k.repeat || k.key < 0 || k.key >= last || is_modifier(k.key) || io.KeysDownDuration[k.key] > 0) continue;
+    if (io.KeysDownDuration[k.key] < 0 && std::find(replayed_.begin(), replayed_.end(), k.key) == replayed_.end()) {
+      // Pressed and released before this frame: ImGui never saw it down.
+      replayed_.push_back(k.key);
+      io.KeysDown[k.key] = true;
+      io.KeysDownDuration[k.key] = 0;  // "pressed this frame" to IsKeyPressed
+    }
+    // Seen down or replayed, the modifiers may be up already (Ctrl released right after A):
+    // the ones it was pressed with count, as they do for the studio's own shortcuts.
     io.KeyCtrl = (k.mods & GLFW_MOD_CONTROL) != 0;
     io.KeyShift = (k.mods & GLFW_MOD_SHIFT) != 0;
     io.KeyAlt = (k.mods & GLFW_MOD_ALT) != 0;
@@ -29,9 +37,8 @@ MissedKeyReplay::MissedKeyReplay(std::span<const KeyPress> keys) {
 }
 
 MissedKeyReplay::~MissedKeyReplay() {
-  if (replayed_.empty()) return;
   ImGuiIO& io = ImGui::GetIO();
-  // No events are processed during a frame, so these keys are still up as far as GLFW knows.
+  // No events are processed during a frame, so the replayed keys are still up as GLFW knows it.
   for (const int key : replayed_) {
     io.KeysDown[key] = false;
     io.KeysDownDuration[key] = -1;

@@ -1,11 +1,14 @@
 #pragma once
-// ImGui 1.86's GLFW backend tells widgets about keys only through io.KeysDown, the state at the
-// start of a frame, so a key pressed and released between two frames never reaches a text field:
-// a quick Ctrl+A while the studio idles in glfwWaitEvents (the first frame after the wake-up is
-// the slow one), or any tap during a slow frame. Measured under Xvfb: 3 of 5 Ctrl+A taps from
-// idle were lost in the export path field. Typed characters come through ImGui's character queue
-// and were never lost; the studio's shortcuts come from its own KeyPress events. This puts the
-// presses ImGui missed into its key state for the one frame they arrived in.
+// ImGui 1.86's GLFW backend tells widgets about keys only through io.KeysDown and io.KeyCtrl etc.,
+// the state at the start of a frame. A key pressed and released between two frames never reaches
+// a text field, and a key still down whose Ctrl was already released reads as a plain key: a
+// quick Ctrl+A tap while the studio idles in glfwWaitEvents (the frame after the wake-up is a
+// slow one) did not select all in the export path, 3 times in 5 under Xvfb (logged: the A never
+// seen down, or seen with Ctrl already up). Typed characters come through ImGui's character queue and were never lost; the
+// studio's shortcuts come from its own KeyPress events, which have every press with the
+// modifiers it was pressed with. This gives ImGui those presses for the frame they arrived in.
+// Not fixed: two chords within one frame (Ctrl+A and then Shift+~ 10 ms later, as a script types)
+// still share one set of modifiers, the last press's; ImGui 1.87's input queue would split them.
 #include <span>
 #include <vector>
 
@@ -15,10 +18,10 @@ namespace fieldlines::gui {
 
 class MissedKeyReplay {
  public:
-  // After ImGui::NewFrame, before any widget: every non-repeat press in `keys` that ImGui does
-  // not see down reads as pressed this frame, with the modifiers it was pressed with.
+  // After ImGui::NewFrame, before any widget: every non-repeat press in `keys` reads as pressed
+  // this frame (also when ImGui missed it), with the modifiers it was pressed with.
   explicit MissedKeyReplay(std::span<const KeyPress> keys);
-  // Before ImGui::Render: ImGui's key state as the backend left it (those keys are up).
+  // Before ImGui::Render: ImGui's key state as the backend left it.
   ~MissedKeyReplay();
   MissedKeyReplay(const MissedKeyReplay&) = delete;
   MissedKeyReplay& operator=(const MissedKeyReplay&) = delete;
