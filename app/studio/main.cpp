@@ -104,6 +104,7 @@ class StateWriter {
                                {"detection", c.detection_report().summary()},
                                {"detecting", c.detection().running()},
                                {"to_review", c.to_review()},
+                               {"auto_training", c.auto_train_busy()},
                                {"image_error", c.image_error()}};
     std::string text = state.dump();
     if (text == last_) return;
@@ -166,6 +167,7 @@ int run(const studio::StudioArgs& args) {
   studio::ControllerOptions options;
   options.autosave = start.autosave;
   options.auto_train = args.auto_train;
+  options.background_save = true;
   studio::FrameStats frame_stats(bench ? static_cast<std::size_t>(args.bench_frames) : 240);
   gui::UiState ui;
   ui.frame_stats = &frame_stats;
@@ -177,7 +179,12 @@ int run(const studio::StudioArgs& args) {
   std::unique_ptr<studio::StudioController> session;
   std::unique_ptr<studio::VideoImport> import;
   const auto open_session = [&](studio::OpenedProject opened) {
-    if (session) session->flush();
+    if (session) {
+      session->flush();
+      if (const std::string failed = session->finish_saves(); !failed.empty())
+        std::fprintf(stderr, "fieldlines-studio: the last save of %s failed: %s\n", session->project_file().c_str(),
+                     failed.c_str());
+    }
     session.reset();  // joins its jobs before the new session starts
     session = std::make_unique<studio::StudioController>(std::move(opened.project), opened.file, options);
     if (opened.needs_detection) session->detect_all(true);
@@ -258,6 +265,11 @@ int run(const studio::StudioArgs& args) {
   // Closed before the frames were ready: ~VideoImport stops it and removes the partial folder.
   if (import) throw Error("cancelled while reading " + import->video().string());
   session->flush();  // threshold edits of the last half second
+  if (const std::string failed = session->finish_saves(); !failed.empty()) {
+    std::fprintf(stderr, "fieldlines-studio: the last save of %s failed: %s\n", session->project_file().c_str(),
+                 failed.c_str());
+    return 1;
+  }
   if (bench) {
     std::printf("bench: %d frames at %dx%d, %zu segments, median frame time %.3f ms\n", frames, args.window_width,
                 args.window_height, session->segments().size(), frame_stats.median_ms());

@@ -349,12 +349,33 @@ void StudioController::import_thresholds(const std::filesystem::path& path) {
 
 void StudioController::autosave() {
   if (!options_.autosave) return;
+  if (options_.background_save) {
+    saver_.save(project_, project_file_);  // a copy: the UI thread goes on editing its own
+    settings_dirty_ = false;               // a failed write sets it again (take_saves)
+    return;
+  }
   try {
     save();
     save_error_.clear();
   } catch (const std::exception& e) {
     save_error_ = e.what();  // shown in the status bar; the edit stays in memory
   }
+}
+
+void StudioController::take_saves(const ProjectSaver::Done& done) {
+  save_count_ += done.saved;
+  if (!done.error.empty()) {
+    save_error_ = done.error;  // shown in the status bar; retried after the settings delay
+    settings_dirty_ = true;
+    settings_changed_at_ = -1;
+  } else if (done.saved > 0) {
+    save_error_.clear();
+  }
+}
+
+std::string StudioController::finish_saves() {
+  take_saves(saver_.finish());
+  return save_error_;
 }
 
 // ---------------------------------------------------------------- background jobs
@@ -423,6 +444,7 @@ bool StudioController::apply_training_result() {
 
 void StudioController::poll(double now_s) {
   training_.poll();
+  take_saves(saver_.poll());
   if (const auto retrained = auto_train_.poll()) adopt_auto_train(*retrained);
   if (!auto_train_.error().empty()) auto_train_summary_ = "retraining failed: " + auto_train_.error();
   if (settings_dirty_) {

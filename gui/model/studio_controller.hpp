@@ -14,6 +14,7 @@
 
 #include "gui/model/auto_train.hpp"
 #include "gui/model/detection_job.hpp"
+#include "gui/model/project_saver.hpp"
 #include "fieldlines/detect/classifier.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/train/metrics.hpp"
@@ -29,6 +30,9 @@ struct ControllerOptions {
   // Retrain both classes in the background after every label change (the studio turns this
   // on by default; off here so tests choose when thresholds may change).
   bool auto_train = false;
+  // Autosave writes on a background thread (gui/model/project_saver.hpp); the studio turns it
+  // on, tests that read the file right after an edit leave it off.
+  bool background_save = false;
 };
 
 // What the background detections since the last detect_all() did: how many images, the labels
@@ -115,8 +119,12 @@ class StudioController {
   std::size_t save_count() const { return save_count_; }
   const std::string& save_error() const { return save_error_; }  // last autosave failure
   bool has_unsaved_settings() const { return settings_dirty_; }
-  // Saves pending threshold/detector changes now (on exit, and in tests).
+  // Saves pending threshold/detector changes now (on exit, and in tests); with background_save
+  // it queues them.
   void flush();
+  // Blocks until every queued background save is written; returns the last failure, if any
+  // (on exit, so a failed final save is reported). Without background_save there is none.
+  std::string finish_saves();
 
   // --- robot thresholds file (fieldlines/thresholds_file.hpp); both throw fieldlines::Error
   void export_thresholds(const std::filesystem::path& path) const;
@@ -228,8 +236,10 @@ class StudioController {
   std::vector<std::vector<char>> in_test_;  // per image, per segment: labelled and in the test split
   std::size_t train_segments_ = 0, test_segments_ = 0, test_images_ = 0;
   std::string split_error_;
+  void take_saves(const ProjectSaver::Done& done);
   std::size_t save_count_ = 0;
   std::string save_error_;
+  ProjectSaver saver_;  // before the jobs: they are stopped first, then the last save finishes
   DetectionJob detection_;
   DetectionReport detection_report_;
   std::vector<std::string> detection_errors_;  // per image

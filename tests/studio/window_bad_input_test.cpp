@@ -139,7 +139,11 @@ TEST_F(StudioBadInput, DamagedAndUnusualPicturesAreReportedAndTheRestWorks) {
   project_ = folder;
   auto studio = start_studio();
   ASSERT_TRUE(studio->running()) << log();
-  ASSERT_TRUE(studio_test::wait_for([&] { return studio_test::read_state(state_)["detection"] != ""; }, 60s)) << log();
+  // The summary grows as images finish: read it once the whole detection has ended.
+  ASSERT_TRUE(studio_test::wait_for([&] {
+    const auto state = studio_test::read_state(state_);
+    return state["detection"] != "" && state["detecting"] == false;
+  }, 60s)) << log();
   const std::string summary = studio_test::read_state(state_)["detection"];
   EXPECT_NE(summary.find("detected 4 images"), std::string::npos) << summary;
   EXPECT_NE(summary.find("3 failed"), std::string::npos) << summary;
