@@ -12,14 +12,23 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// Bilinear interpolation of an int16 map at (x, y), clamped to the image.
-float sample(const std::vector<std::int16_t>& map, int w, int h, float x, float y) {
+// Bilinear interpolation of dx and dy at (x, y), clamped to the image; the corners and weights
+// are found once for both maps.
+struct Gradient {
+  float gx, gy;
+};
+Gradient sample(const GradientMaps& maps, float x, float y) {
+  const int w = maps.width, h = maps.height;
   const int x0 = std::clamp(static_cast<int>(x), 0, w - 1), y0 = std::clamp(static_cast<int>(y), 0, h - 1);
   const int x1 = std::clamp(static_cast<int>(x + 1), 0, w - 1), y1 = std::clamp(static_cast<int>(y + 1), 0, h - 1);
   const float tx = x - static_cast<int>(x), ty = y - static_cast<int>(y);
-  const float top = map[y0 * w + x0] + (map[y0 * w + x1] - map[y0 * w + x0]) * tx;
-  const float bottom = map[y1 * w + x0] + (map[y1 * w + x1] - map[y1 * w + x0]) * tx;
-  return top + (bottom - top) * ty;
+  const int i00 = y0 * w + x0, i01 = y0 * w + x1, i10 = y1 * w + x0, i11 = y1 * w + x1;
+  const auto at = [&](const std::int16_t* m) {
+    const float top = m[i00] + (m[i01] - m[i00]) * tx;
+    const float bottom = m[i10] + (m[i11] - m[i10]) * tx;
+    return top + (bottom - top) * ty;
+  };
+  return {at(maps.dx.data()), at(maps.dy.data())};
 }
 
 }  // namespace
@@ -62,7 +71,7 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
     // The gradient orientation on the line itself (bilinear), not at the discrete pixel.
     const float dist = la * px.x + lb * px.y + lc;
     const float qx = px.x - la * dist, qy = px.y - lb * dist;
-    const float gx = sample(maps.dx, w, h, qx, qy), gy = sample(maps.dy, w, h, qx, qy);
+    const auto [gx, gy] = sample(maps, qx, qy);
     // The method's test is orientation_distance(normal, atan2(gy, gx)) > max_angle_error. Its
     // sign is that of |g| sin(delta - max): |n x g| cos(max) - |n . g| sin(max), a few
     // multiplications instead of an atan2. Only within 1e-4 rad of the threshold, where the
