@@ -58,11 +58,28 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
 
   const int trim = static_cast<int>(std::min(5.0, seg.count() * 0.1));
   const Pixel first = seg.first(), last = seg.last();
-  std::array<float, 27> window{};  // running sum of 3x3 BGR windows, row-major, channel-interleaved
+  // Running sum of the 3x3 BGR windows, row-major, channel-interleaved. The method sums in float;
+  // while every sum stays below 2^24 (fewer than 65793 windows of bytes) that is exact, so exact
+  // integer sums give the same floats for less work. Longer segments keep the float sums.
+  std::array<float, 27> window{};
+  std::array<std::uint32_t, 27> int_window{};
+  const bool int_sums = seg.last_index() - seg.first_index() < 65000;
   int window_count = 0, inliers = 0, outliers = 0;
 
   for (int i = seg.first_index(); i <= seg.last_index(); ++i) {
     const Pixel px = chain[i];
+    if (i + 8 <= seg.last_index()) {
+      // The pixels are known ahead: have their gradient and colour rows in flight.
+      const Pixel ahead = chain[i + 8];
+      const int a = ahead.y * w + ahead.x;
+      __builtin_prefetch(maps.dx.data() + a);
+      __builtin_prefetch(maps.dy.data() + a);
+      __builtin_prefetch(maps.dx.data() + a + w);
+      __builtin_prefetch(maps.dy.data() + a + w);
+      __builtin_prefetch(bgr.ptr<std::uint8_t>(std::max(ahead.y - 1, 0)) + 3 * ahead.x);
+      __builtin_prefetch(bgr.ptr<std::uint8_t>(ahead.y) + 3 * ahead.x);
+      __builtin_prefetch(bgr.ptr<std::uint8_t>(std::min(ahead.y + 1, h - 1)) + 3 * ahead.x);
+    }
     if (marks[px.y * w + px.x] != Mark::Inlier) continue;  // junction and dropped pixels do not count
     const int to_end = seg.horizontal() ? std::min(std::abs(px.x - last.x), std::abs(px.x - first.x))
                                         : std::min(std::abs(px.y - last.y), std::abs(px.y - first.y));
@@ -91,11 +108,18 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
     if (px.x < 1 || px.x >= w - 1 || px.y < 1 || px.y >= h - 1) continue;
     for (int r = 0; r < 3; ++r) {
       const std::uint8_t* row = bgr.ptr<std::uint8_t>(px.y - 1 + r) + 3 * (px.x - 1);
-      float* dst = &window[r * 9];
-      for (int k = 0; k < 9; ++k) dst[k] += row[k];
+      if (int_sums) {
+        std::uint32_t* dst = &int_window[r * 9];
+        for (int k = 0; k < 9; ++k) dst[k] += row[k];
+      } else {
+        float* dst = &window[r * 9];
+        for (int k = 0; k < 9; ++k) dst[k] += row[k];
+      }
     }
     ++window_count;
   }
+  if (int_sums)
+    for (int k = 0; k < 27; ++k) window[k] = static_cast<float>(int_window[k]);
 
   // Sobel of the mean window / 4, in R,G,B order; y is the image-down derivative.
   out.grad_x = {0, 0, 0};
