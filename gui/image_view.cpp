@@ -34,7 +34,9 @@ void draw_styled_line(ImDrawList* draw, ImVec2 a, ImVec2 b, const studio::Segmen
   if (length < 1e-3f) return;
   const auto at = [&](float t) { return ImVec2{a.x + dx * t / length, a.y + dy * t / length}; };
   const bool round = studio::dash_pattern(style.stroke, style.thickness).round;
-  for (const studio::DashPiece& piece : studio::dash_pieces(style.stroke, style.thickness, length)) {
+  static std::vector<studio::DashPiece> pieces;  // UI thread only; reused so a frame allocates nothing
+  studio::dash_pieces(style.stroke, style.thickness, length, pieces);
+  for (const studio::DashPiece& piece : pieces) {
     if (round) {
       draw->AddCircleFilled(at(0.5f * (piece.from + piece.to)), 0.5f * (piece.to - piece.from), col);
     } else {

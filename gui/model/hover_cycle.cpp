@@ -5,22 +5,20 @@
 namespace fieldlines::studio {
 
 namespace {
+// A handful of segments at most, every frame: a permutation check needs no allocation.
 bool same_set(std::span<const std::size_t> a, std::span<const std::size_t> b) {
-  if (a.size() != b.size()) return false;
-  std::vector<std::size_t> x(a.begin(), a.end()), y(b.begin(), b.end());
-  std::sort(x.begin(), x.end());
-  std::sort(y.begin(), y.end());
-  return x == y;
+  return a.size() == b.size() && std::is_permutation(a.begin(), a.end(), b.begin());
 }
 }  // namespace
 
 std::optional<std::size_t> HoverCycle::update(std::size_t image, std::span<const std::size_t> under,
                                               std::span<const Segment> segments) {
-  const bool same = image == image_ && same_set(under, candidates_);
-  image_ = image;
+  previous_.swap(candidates_);  // both keep their capacity: no allocation per frame
   candidates_.assign(under.begin(), under.end());
   // Indices past the image's segments would be stale (the image was re-detected).
   std::erase_if(candidates_, [&](std::size_t i) { return i >= segments.size(); });
+  const bool same = image == image_ && same_set(candidates_, previous_);
+  image_ = image;
   if (!same) pinned_.reset();
   const auto contains = [&](std::size_t i) { return std::find(candidates_.begin(), candidates_.end(), i) != candidates_.end(); };
   if (pinned_ && !contains(*pinned_)) pinned_.reset();
@@ -29,7 +27,7 @@ std::optional<std::size_t> HoverCycle::update(std::size_t image, std::span<const
   if (same && now && now == hovered_ && segments[*now].label != hovered_label_) {
     // Just labelled: on to the next unlabelled segment under the cursor, if any.
     const std::size_t n = candidates_.size();
-    const std::size_t at = static_cast<std::size_t>(std::find(candidates_.begin(), candidates_.end(), *now) - candidates_.begin());
+    const std::size_t at = rank(now);
     for (std::size_t k = 1; k < n; ++k) {
       const std::size_t other = candidates_[(at + k) % n];
       if (segments[other].label == Label::Unlabelled) {

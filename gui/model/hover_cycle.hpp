@@ -36,6 +36,7 @@ class HoverCycle {
 
   std::size_t image_ = 0;
   std::vector<std::size_t> candidates_;  // nearest first, as last given
+  std::vector<std::size_t> previous_;    // the update before's, to tell a new set
   std::optional<std::size_t> pinned_;    // chosen by next() or a label; kept while the set is
   std::optional<std::size_t> hovered_;
   Label hovered_label_ = Label::Unlabelled;  // its label at the last update

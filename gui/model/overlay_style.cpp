@@ -88,17 +88,28 @@ DashPattern dash_pattern(Stroke stroke, float thickness) {
   return {1, 1, false};
 }
 
-std::vector<DashPiece> dash_pieces(Stroke stroke, float thickness, float length) {
-  if (!(length > 0)) return {};
-  if (stroke == Stroke::Solid) return {{0, length}};
+void dash_pieces(Stroke stroke, float thickness, float length, std::vector<DashPiece>& out) {
+  out.clear();
+  if (!(length > 0)) return;
+  if (stroke == Stroke::Solid) {
+    out.push_back({0, length});
+    return;
+  }
   const DashPattern p = dash_pattern(stroke, thickness);
-  std::vector<DashPiece> out;
   if (p.round) {
-    if (length < p.on) return {{0.5f * (length - p.on), 0.5f * (length + p.on)}};  // one dot, centred
+    if (length < p.on) {
+      out.push_back({0.5f * (length - p.on), 0.5f * (length + p.on)});  // one dot, centred
+      return;
+    }
     for (float t = 0; t + p.on <= length; t += p.period) out.push_back({t, t + p.on});
-    return out;
+    return;
   }
   for (float t = 0; t < length; t += p.period) out.push_back({t, std::min(t + p.on, length)});
+}
+
+std::vector<DashPiece> dash_pieces(Stroke stroke, float thickness, float length) {
+  std::vector<DashPiece> out;
+  dash_pieces(stroke, thickness, length, out);
   return out;
 }
 

@@ -59,10 +59,12 @@ struct DashPattern {
 DashPattern dash_pattern(Stroke stroke, float thickness);
 
 // The pieces [from, to] (distances along the line, 0..length) a stroke draws on a line of that
-// length. Dots are whole (never cut at the end); a line too short for one dot gets one centred.
+// length, into `out` (cleared; its capacity is reused, as the view draws hundreds per frame).
+// Dots are whole (never cut at the end); a line too short for one dot gets one centred.
 struct DashPiece {
   float from = 0, to = 0;
 };
+void dash_pieces(Stroke stroke, float thickness, float length, std::vector<DashPiece>& out);
 std::vector<DashPiece> dash_pieces(Stroke stroke, float thickness, float length);
 
 struct LegendEntry {
