@@ -24,8 +24,10 @@ std::optional<std::size_t> HoverCycle::update(std::size_t image, std::span<const
   if (pinned_ && !contains(*pinned_)) pinned_.reset();
 
   std::optional<std::size_t> now = pinned_ ? pinned_ : (candidates_.empty() ? std::nullopt : std::optional(candidates_[0]));
-  if (same && now && now == hovered_ && segments[*now].label != hovered_label_) {
-    // Just labelled: on to the next unlabelled segment under the cursor, if any.
+  if (same && now && now == hovered_ && segments[*now].label != hovered_label_ &&
+      segments[*now].label != Label::Unlabelled) {
+    // Just labelled: on to the next unlabelled segment under the cursor, if any. A cleared label
+    // (C, or an undo) stays hovered, to be labelled again.
     const std::size_t n = candidates_.size();
     const std::size_t at = rank(now);
     for (std::size_t k = 1; k < n; ++k) {

@@ -17,9 +17,9 @@ class HoverCycle {
   // Once per frame: `under` = the segments under the cursor, nearest first (segments_under), on
   // image `image` whose segments are `segments` (for their labels). Returns the hovered one:
   // the nearest, unless Space or a label picked another of the same set. A different set (the
-  // cursor moved on, or another image) starts again from the nearest. If the hovered segment's
-  // label changed since the last update and the set is the same, the hover moves to the next
-  // unlabelled segment of the set (in cycling order), when there is one.
+  // cursor moved on, or another image) starts again from the nearest. If the hovered segment was
+  // given a label since the last update (not cleared) and the set is the same, the hover moves
+  // to the next unlabelled segment of the set (in cycling order), when there is one.
   std::optional<std::size_t> update(std::size_t image, std::span<const std::size_t> under,
                                     std::span<const Segment> segments);
   // Space: the next segment of the set (by distance, wrapping), hovered from the next update.

@@ -81,6 +81,11 @@ TEST(HoverCycle, ALabelMovesTheHoverToTheNextUnlabelledSegmentUnderTheCursor) {
   EXPECT_EQ(cycle.update(0, under, segs), 2u);
   segs[2].label = Label::Marking;  // correcting the hovered one keeps it hovered
   EXPECT_EQ(cycle.update(0, under, segs), 2u);
+  segs[1].label = Label::Unlabelled;  // 1 is free again, but
+  segs[2].label = Label::Unlabelled;  // clearing the hovered one (C, undo) keeps it hovered
+  EXPECT_EQ(cycle.update(0, under, segs), 2u);
+  segs[2].label = Label::None;  // labelled again: on to 1, the only unlabelled one, wrapping
+  EXPECT_EQ(cycle.update(0, under, segs), 1u);
   // Cycling to a segment with another label is not mistaken for a label change.
   segs = unlabelled(4);
   segs[2].label = Label::None;
