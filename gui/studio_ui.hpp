@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "fieldlines/train/protocols.hpp"
 #include "fieldlines/train/training.hpp"
 #include "gui/model/frame_stats.hpp"
 #include "gui/image_view.hpp"
@@ -32,7 +33,7 @@ struct UiState {
   Panel shown_panel = Panel::Label;
   int image_filter = 0;  // 0 all, 1 not fully labelled, 2 with errors, 3 test split
   int image_order = 0;   // Images tab: 0 file order, 1 least certain first (review order)
-  TrainParams train_params;
+  TrainParams train_params = protocol_spec(Protocol::Ours).train;  // as `fieldlines train` by default
   int scatter_x = 0, scatter_y = 1;  // threshold dimensions of the particle scatter
   // Train tab: what Apply did ("applied: marking P .. R .. on the test split"), shown while the
   // applied thresholds are still the current ones.
