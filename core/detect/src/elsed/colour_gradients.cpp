@@ -33,9 +33,8 @@ Gradient sample(const GradientMaps& maps, float x, float y) {
 
 }  // namespace
 
-bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, const std::vector<Mark>& marks,
-                      const GradientMaps& maps, const cv::Mat& bgr, const ValidationParams& params,
-                      Segment& out) {
+bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, const GradientMaps& maps,
+                      const cv::Mat& bgr, const ValidationParams& params, Segment& out) {
   const int w = maps.width, h = maps.height;
   const auto& e = seg.endpoints();
   out.x0 = e[0];
@@ -80,7 +79,7 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
       __builtin_prefetch(bgr.ptr<std::uint8_t>(ahead.y) + 3 * ahead.x);
       __builtin_prefetch(bgr.ptr<std::uint8_t>(std::min(ahead.y + 1, h - 1)) + 3 * ahead.x);
     }
-    if (marks[px.y * w + px.x] != Mark::Inlier) continue;  // junction and dropped pixels do not count
+    if (mark_of(maps.state[px.y * w + px.x]) != Mark::Inlier) continue;  // junction and dropped pixels do not count
     const int to_end = seg.horizontal() ? std::min(std::abs(px.x - last.x), std::abs(px.x - first.x))
                                         : std::min(std::abs(px.y - last.y), std::abs(px.y - first.y));
     if (to_end < trim) continue;

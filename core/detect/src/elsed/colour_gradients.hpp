@@ -21,9 +21,8 @@ struct ValidationParams {
 // gradient orientation within the threshold of its normal than not. While visiting them, the
 // 3x3 BGR windows around those pixels are summed; the mean window is Sobel-filtered once.
 // Fills `out` (endpoints, saliency, gradients; label untouched) and returns whether it is valid.
-bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, const std::vector<Mark>& marks,
-                      const GradientMaps& maps, const cv::Mat& bgr, const ValidationParams& params,
-                      Segment& out);
+bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, const GradientMaps& maps,
+                      const cv::Mat& bgr, const ValidationParams& params, Segment& out);
 
 }  // namespace fieldlines::elsed
 

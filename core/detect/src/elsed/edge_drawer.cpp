@@ -15,9 +15,9 @@ constexpr double kPi = std::numbers::pi;
 
 }  // namespace
 
-void EdgeDrawer::reset(const GradientMaps& maps, std::vector<Mark>& marks, const DrawerParams& params) {
+void EdgeDrawer::reset(GradientMaps& maps, const DrawerParams& params) {
   maps_ = &maps;
-  marks_ = &marks;
+  state_ = maps.state.data();
   params_ = params;
   segments_.clear();
   stack_.clear();
@@ -26,9 +26,9 @@ void EdgeDrawer::reset(const GradientMaps& maps, std::vector<Mark>& marks, const
 }
 
 void EdgeDrawer::draw_from_anchor(Pixel anchor) {
-  const EdgeDir dir = maps_->dir[anchor.y * maps_->width + anchor.x];
+  const EdgeDir dir = dir_of(state_[anchor.y * maps_->width + anchor.x]);
   const Step first = dir == EdgeDir::Horizontal ? Step::Right : Step::Down;
-  mark(anchor) = Mark::Anchor;
+  set_mark(anchor, Mark::Anchor);
   // Only this anchor's own first-branch pixels may seed its other side: never a previous
   // anchor's (or a previous image's, whose pixels may lie outside this one).
   anchor_pixels_.clear();
@@ -86,27 +86,28 @@ void EdgeDrawer::draw_tree(Pixel anchor, std::vector<Pixel>& anchor_pixels, bool
     int idx = px.y * width + px.x;
 
     while (static_cast<int>(outliers_.size()) <= kMaxOutliers) {
-      if (!step_along_gradient(dir, *maps_, px, last, marks_->data())) break;
+      if (!step_along_gradient(dir, *maps_, px, last, true)) break;
       idx = px.y * width + px.x;
-      const Mark m = (*marks_)[idx];
+      const PixelState state = state_[idx];
+      const Mark m = mark_of(state);
       hit_owned = m == Mark::Inlier || m == Mark::Junction || m == Mark::Edge;
       if (hit_owned) break;
 
       LineModel& seg = segments_[cur];
       if (on_segment) {
         if (seg.is_inlier(px.x, px.y, params_.px_to_segment_dist)) {
-          (*marks_)[idx] = Mark::Inlier;
+          set_mark(idx, Mark::Inlier);
           chain_.push_back(px);
           outliers_.clear();
           seg.add(px, static_cast<int>(chain_.size()) - 1, first_side);
           (first_side ? seg.first_side_done : seg.second_side_done) = false;
         } else {
           outliers_.push_back(px);
-          (*marks_)[idx] = Mark::Outlier;
+          set_mark(idx, Mark::Outlier);
         }
       } else {
         chain_.push_back(px);
-        (*marks_)[idx] = Mark::Edge;
+        set_mark(idx, Mark::Edge);
         if (static_cast<int>(chain_.size()) - checked >= min_len) {
           if (model_started) {
             seg.slide_two(chain_);
@@ -116,13 +117,13 @@ void EdgeDrawer::draw_tree(Pixel anchor, std::vector<Pixel>& anchor_pixels, bool
           }
           if (seg.fits(chain_, params_.line_fit_error)) {
             on_segment = true;
-            for (int i = checked; i < checked + min_len; ++i) mark(chain_[i]) = Mark::Inlier;
+            for (int i = checked; i < checked + min_len; ++i) set_mark(chain_[i], Mark::Inlier);
           } else {
             checked += 2;
           }
         }
       }
-      dir = maps_->dir[idx];
+      dir = dir_of(state);
     }
 
     // Remember the first branch's pixels next to the anchor for the anchor's other side.
@@ -141,7 +142,7 @@ void EdgeDrawer::draw_tree(Pixel anchor, std::vector<Pixel>& anchor_pixels, bool
       if (!outliers_.empty() && (first_side || seg->has_second_side())) {
         // The last inlier before the outliers is usually the start of the turn: drop it.
         const Pixel drop = first_side ? seg->last() : seg->first();
-        mark(drop) = Mark::Free;
+        set_mark(drop, Mark::Free);
         seg->remove_endpoint(first_side);
         outliers_.insert(outliers_.begin(), chain_.back());
         chain_.pop_back();
@@ -150,9 +151,9 @@ void EdgeDrawer::draw_tree(Pixel anchor, std::vector<Pixel>& anchor_pixels, bool
 
       if (static_cast<int>(outliers_.size()) > kMaxOutliers) {
         // The edge turned: draw on from here as a new, free edge once this segment is done.
-        for (const Pixel& o : outliers_) mark(o) = Mark::Free;
+        for (const Pixel& o : outliers_) set_mark(o, Mark::Free);
         Step predicted;
-        if (maps_->dir[idx] == EdgeDir::Horizontal) predicted = last.x < px.x ? Step::Right : Step::Left;
+        if (dir_of(state_[idx]) == EdgeDir::Horizontal) predicted = last.x < px.x ? Step::Right : Step::Left;
         else predicted = last.y < px.y ? Step::Down : Step::Up;
         push_or_reuse(pop, predicted, px, true);  // `pop` is still true here: reuses the top
         Branch& turn = stack_.back();
@@ -201,11 +202,11 @@ void EdgeDrawer::add_junction_pixels(const std::vector<Pixel>& extension, LineMo
     const Pixel p = extension[i];
     if (seg.is_inlier(p.x, p.y, params_.px_to_segment_dist)) {
       // The half nearest the segment is the junction itself: owned, but not validated.
-      mark(p) = i < half ? Mark::Junction : Mark::Inlier;
+      set_mark(p, i < half ? Mark::Junction : Mark::Inlier);
       chain_.push_back(p);
       seg.add(p, static_cast<int>(chain_.size()) - 1, first_side);
     } else {
-      mark(p) = Mark::Outlier;
+      set_mark(p, Mark::Outlier);
     }
   }
 }

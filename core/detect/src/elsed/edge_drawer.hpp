@@ -29,8 +29,9 @@ struct DrawerParams {
 
 class EdgeDrawer {
  public:
-  // Prepares for a new image; `marks` must be width*height and all Free.
-  void reset(const GradientMaps& maps, std::vector<Mark>& marks, const DrawerParams& params);
+  // Prepares for a new image; every pixel's mark in maps.state must be Free (as the gradient
+  // pass leaves it). The drawing marks pixels there.
+  void reset(GradientMaps& maps, const DrawerParams& params);
   void draw_from_anchor(Pixel anchor);
 
   // Finished segments, in the order they were completed; their pixels index into chain().
@@ -51,10 +52,13 @@ class EdgeDrawer {
   bool can_extend(const LineModel& seg, bool at_end, std::vector<Pixel>& extension);
   void add_junction_pixels(const std::vector<Pixel>& extension, LineModel& seg, bool first_side);
   void push_or_reuse(bool& reuse_top, Step step, Pixel px, bool first_side);
-  Mark& mark(Pixel p) { return (*marks_)[p.y * maps_->width + p.x]; }
+  Mark mark(int i) const { return mark_of(state_[i]); }
+  Mark mark(Pixel p) const { return mark(p.y * maps_->width + p.x); }
+  void set_mark(int i, Mark m) { state_[i] = with_mark(state_[i], m); }
+  void set_mark(Pixel p, Mark m) { set_mark(p.y * maps_->width + p.x, m); }
 
   const GradientMaps* maps_ = nullptr;
-  std::vector<Mark>* marks_ = nullptr;
+  PixelState* state_ = nullptr;  // maps_->state, written
   DrawerParams params_;
   std::vector<LineModel> segments_;
   std::vector<Branch> stack_;

@@ -6,6 +6,8 @@ namespace fieldlines {
 
 using elsed::EdgeDir;
 using elsed::Mark;
+using elsed::dir_of;
+using elsed::mark_of;
 using elsed::Pixel;
 
 void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& params) {
@@ -29,7 +31,7 @@ void ElsedEngine::find_anchors(int scan_interval, int threshold) {
       const int i = y * w + x;
       if (g[i] == 0) continue;
       // A local maximum across the edge by at least `threshold`.
-      const int step = maps_.dir[i] == EdgeDir::Horizontal ? w : 1;
+      const int step = dir_of(maps_.state[i]) == EdgeDir::Horizontal ? w : 1;
       if (g[i] >= g[i - step] + threshold && g[i] >= g[i + step] + threshold) anchors_.push_back({x, y});
     }
   }
@@ -46,24 +48,23 @@ void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, std::vec
     anchor_threshold /= 2;
   }
 
-  marks_.assign(maps_.mag.size(), Mark::Free);
   elsed::DrawerParams& dp = drawer_params_;
   dp.line_fit_error = params.line_fit_error;
   dp.px_to_segment_dist = params.px_to_segment_dist;
   dp.min_line_length = params.min_line_length;
   dp.treat_junctions = params.treat_junctions;
   dp.junction_sizes = params.junction_sizes;  // copy-assignment: reuses the capacity
-  drawer_.reset(maps_, marks_, dp);
+  drawer_.reset(maps_, dp);  // the gradient pass has left every mark Free
   const int w = maps_.width;
   for (const Pixel& a : anchors_) {
-    if (marks_[a.y * w + a.x] != Mark::Free) continue;  // already part of an edge
+    if (mark_of(maps_.state[a.y * w + a.x]) != Mark::Free) continue;  // already part of an edge
     drawer_.draw_from_anchor(a);
   }
 
   const elsed::ValidationParams vp{params.validation_threshold, params.validate};
   Segment s;
   for (const elsed::LineModel& seg : drawer_.segments()) {
-    if (elsed::validate_segment(seg, drawer_.chain(), marks_, maps_, bgr, vp, s)) out.push_back(s);
+    if (elsed::validate_segment(seg, drawer_.chain(), maps_, bgr, vp, s)) out.push_back(s);
   }
 }
 

@@ -30,7 +30,6 @@ class ElsedEngine {
   double pass_sigma_ = -1;
   elsed::DrawerParams drawer_params_;  // a member so its junction_sizes keeps its capacity
   elsed::GradientMaps maps_;
-  std::vector<elsed::Mark> marks_;
   std::vector<elsed::Pixel> anchors_;
   elsed::EdgeDrawer drawer_;
 };

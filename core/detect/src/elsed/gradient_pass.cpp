@@ -137,7 +137,7 @@ struct GradientRow {
   std::int16_t* dx;
   std::int16_t* dy;
   std::int16_t* mag;
-  EdgeDir* dir;
+  PixelState* state;  // the direction; Mark::Free
 };
 
 inline void sobel_px(const std::uint8_t* a, const std::uint8_t* b, const std::uint8_t* c, int x, int threshold,
@@ -148,14 +148,14 @@ inline void sobel_px(const std::uint8_t* a, const std::uint8_t* b, const std::ui
   o.dx[x] = static_cast<std::int16_t>(gx);
   o.dy[x] = static_cast<std::int16_t>(gy);
   o.mag[x] = static_cast<std::int16_t>(sum < threshold ? 0 : sum);
-  o.dir[x] = ax >= ay ? EdgeDir::Vertical : EdgeDir::Horizontal;
+  o.state[x] = static_cast<PixelState>(ax >= ay ? EdgeDir::Vertical : EdgeDir::Horizontal);
 }
 
 // Sobel 3x3 of three smoothed rows (each padded by one pixel, so a[x + 1] is pixel x) and the
 // per-pixel products. Output rows are exactly w long: the last vector overlaps the one before.
 void sobel_row(const std::uint8_t* a, const std::uint8_t* b, const std::uint8_t* c, int w, int threshold,
                const GradientRow& o, bool use_avx2) {
-  int x = use_avx2 ? avx2::sobel_row(a, b, c, w, threshold, o.dx, o.dy, o.mag, reinterpret_cast<std::uint8_t*>(o.dir)) : 0;
+  int x = use_avx2 ? avx2::sobel_row(a, b, c, w, threshold, o.dx, o.dy, o.mag, o.state) : 0;
   if (x == w) return;
 #if CV_SIMD128
   if (w >= 8) {
@@ -171,7 +171,7 @@ void sobel_row(const std::uint8_t* a, const std::uint8_t* b, const std::uint8_t*
       cv::v_store(o.dx + x, gx);
       cv::v_store(o.dy + x, gy);
       cv::v_store(o.mag + x, cv::v_reinterpret_as_s16(sum & (sum >= thr)));
-      cv::v_pack_store(reinterpret_cast<std::uint8_t*>(o.dir + x), (ay > ax) & one);
+      cv::v_pack_store(o.state + x, (ay > ax) & one);
       if (x + 8 == w) return;
       x = std::min(x + 8, w - 8);
     }
@@ -243,7 +243,7 @@ void GradientPass::run(const cv::Mat& bgr, GradientMaps& maps) {
   maps.dx.resize(n);
   maps.dy.resize(n);
   maps.mag.resize(n);
-  maps.dir.resize(n);
+  maps.state.resize(n);
   run_rows(bgr, maps, 0, bgr.rows);
 }
 
@@ -269,7 +269,7 @@ void GradientPass::run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begi
   const SmoothV v_pass = smooth_v_for(r, use_avx2_);
   const auto sobel = [&](int y) {
     const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(w);
-    const GradientRow o{maps.dx.data() + at, maps.dy.data() + at, maps.mag.data() + at, maps.dir.data() + at};
+    const GradientRow o{maps.dx.data() + at, maps.dy.data() + at, maps.mag.data() + at, maps.state.data() + at};
     sobel_row(b_slot(std::max(y - 1, 0)), b_slot(y), b_slot(std::min(y + 1, h - 1)), w, threshold_, o, use_avx2_);
   };
 

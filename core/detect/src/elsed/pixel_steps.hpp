@@ -15,20 +15,17 @@ namespace fieldlines::elsed {
 // `last` is the previous pixel on entry and becomes `px`'s old value. Returns false at the image
 // border or when the new pixel has no gradient.
 //
-// `ahead`, when given, is a per-pixel byte map the caller reads at the new pixel next (besides
-// g.dir): their cache lines are requested with the magnitudes' at each candidate, not after the
-// choice (the walk is bound by memory latency, one dependent step after another).
+// With `request_state`, the cache lines of g.state, which the caller reads at the new pixel
+// next, are requested with the magnitudes' at each candidate, not after the choice (the walk is
+// bound by memory latency, one dependent step after another).
 inline bool step_along_gradient(EdgeDir dir, const GradientMaps& g, Pixel& px, Pixel& last,
-                                const void* ahead = nullptr) {
+                                bool request_state = false) {
   const int w = g.width, h = g.height;
   const std::int16_t* m = g.mag.data();
   const Pixel prev = last;
   last = px;
   const auto at = [&](int x, int y) {
-    if (ahead) {
-      __builtin_prefetch(static_cast<const std::uint8_t*>(ahead) + y * w + x);
-      __builtin_prefetch(g.dir.data() + y * w + x);
-    }
+    if (request_state) __builtin_prefetch(g.state.data() + y * w + x);
     return m[y * w + x];
   };
   if (dir == EdgeDir::Horizontal) {
