@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <span>
 
+#include "gui/model/figures.hpp"
+
 namespace fieldlines::studio {
 
 namespace {
@@ -19,13 +21,19 @@ Counts count_with(std::span<const Segment> segments, const Thresholds& t) {
 std::string progress_line(const TrainingSnapshot& snap) {
   char line[128];
   if (snap.phase == TrainingPhase::Polish) {
-    std::snprintf(line, sizeof line, "polish: best %.3f (PSO %.3f after %d iterations)", snap.best_score,
-                  snap.pso_best_score, snap.iteration);
+    std::snprintf(line, sizeof line, "polish: best %.3f (PSO %.3f)", snap.best_score, snap.pso_best_score);
   } else {
-    std::snprintf(line, sizeof line, "PSO iteration %d/%d  best %.3f", snap.iteration, snap.iterations,
-                  snap.best_score);
+    std::snprintf(line, sizeof line, "PSO %d/%d: best %.3f", snap.iteration, snap.iterations, snap.best_score);
   }
   return line;
+}
+
+std::string applied_summary(const Counts& counts, std::string_view split) {
+  const auto pr = [](const ClassCounts& c) {
+    return "P " + format_figure(c, c.precision()) + " R " + format_figure(c, c.recall());
+  };
+  return "applied: marking " + pr(counts.marking) + " | boundary " + pr(counts.boundary) + " on the " +
+         std::string(split) + " split";
 }
 
 void TrainingJob::start(std::vector<Segment> train_set, std::vector<Segment> test_set, const Thresholds& initial,

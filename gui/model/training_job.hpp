@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fieldlines/train/training.hpp"
@@ -23,9 +24,13 @@ struct TrainingSnapshot {
   double eta_s = 0;                   // from the mean time per iteration so far (0 once polished)
 };
 
-// The Train tab's progress line: "PSO iteration 7/15  best 82.000" while the swarm runs, then
-// "polish: best 84.000 (PSO 82.000 after 15 iterations)", the score the result reports.
+// The Train tab's progress line: "PSO 7/15: best 82.000" while the swarm runs, then
+// "polish: best 84.000 (PSO 82.000)", the score the result reports.
 std::string progress_line(const TrainingSnapshot& snap);
+
+// Apply's confirmation, from the live counts once applied: "applied: marking P 0.912 R 0.880 |
+// boundary P n/a R n/a on the test split" (n/a where a class has no data there).
+std::string applied_summary(const Counts& counts, std::string_view split);
 
 struct TrainingResult {
   TrainResult run;                   // run.cancelled when stopped early (the best so far)

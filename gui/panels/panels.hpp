@@ -14,6 +14,9 @@ void draw_auto_train(studio::StudioController& controller);
 void draw_metrics_panel(studio::StudioController& controller, UiState& ui);
 void draw_export_panel(studio::StudioController& controller, UiState& ui);
 
+// A "(?)" whose tooltip, `text`, opens above it: help that never covers what follows it.
+void help_marker(const char* text);
+
 // The colour legend of the current overlay mode (also drawn on the Label panel).
 void draw_legend(studio::OverlayMode mode);
 

@@ -25,26 +25,59 @@ float dim_value(const Thresholds& t, int dim) {
   }
 }
 
+// The particles in two threshold dimensions, with each axis's name and value range: the swarm
+// during PSO, where each polish start ended after it; the best is circled.
 void draw_scatter(const studio::TrainingSnapshot& snap, int dx, int dy) {
-  const ImVec2 size{ImGui::GetContentRegionAvail().x, 160};
+  const ImVec2 size{ImGui::GetContentRegionAvail().x, 180};
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   ImGui::Dummy(size);
-  ImDrawList* draw = ImGui::GetWindowDrawList();
-  draw->AddRectFilled(p0, {p0.x + size.x, p0.y + size.y}, IM_COL32(30, 30, 35, 255));
-  float lo_x = 1e9f, hi_x = -1e9f, lo_y = 1e9f, hi_y = -1e9f;
+  float lo_x = dim_value(snap.best, dx), hi_x = lo_x, lo_y = dim_value(snap.best, dy), hi_y = lo_y;
   for (const Thresholds& t : snap.particles) {
     lo_x = std::min(lo_x, dim_value(t, dx)), hi_x = std::max(hi_x, dim_value(t, dx));
     lo_y = std::min(lo_y, dim_value(t, dy)), hi_y = std::max(hi_y, dim_value(t, dy));
   }
+  char lo_x_text[16], hi_x_text[16], lo_y_text[16], hi_y_text[16];
+  std::snprintf(lo_x_text, sizeof lo_x_text, "%.4g", lo_x);
+  std::snprintf(hi_x_text, sizeof hi_x_text, "%.4g", hi_x);
+  std::snprintf(lo_y_text, sizeof lo_y_text, "%.4g", lo_y);
+  std::snprintf(hi_y_text, sizeof hi_y_text, "%.4g", hi_y);
+  // y values left of the plot, x values and the x name under it.
+  const float line = ImGui::GetTextLineHeight();
+  const float left = std::max(ImGui::CalcTextSize(lo_y_text).x, ImGui::CalcTextSize(hi_y_text).x) + 6;
+  const ImVec2 a{p0.x + left, p0.y}, b{p0.x + size.x, p0.y + size.y - line - 2};
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddRectFilled(a, b, IM_COL32(30, 30, 35, 255));
+  const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text), dim = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+  draw->AddText({a.x - ImGui::CalcTextSize(hi_y_text).x - 4, a.y}, text, hi_y_text);
+  draw->AddText({a.x - ImGui::CalcTextSize(lo_y_text).x - 4, b.y - line}, text, lo_y_text);
+  draw->AddText({a.x, b.y + 2}, text, lo_x_text);
+  draw->AddText({b.x - ImGui::CalcTextSize(hi_x_text).x, b.y + 2}, text, hi_x_text);
+  const float name_x = ImGui::CalcTextSize(kDims[dx]).x;
+  draw->AddText({(a.x + b.x - name_x) / 2, b.y + 2}, dim, kDims[dx]);
+  draw->AddText({a.x + 4, a.y + 2}, dim, kDims[dy]);
+  const char* what = snap.phase == TrainingPhase::Polish ? "polished starts" : "swarm";
+  draw->AddText({b.x - ImGui::CalcTextSize(what).x - 4, a.y + 2}, dim, what);
+
   const float span_x = std::max(hi_x - lo_x, 1e-3f), span_y = std::max(hi_y - lo_y, 1e-3f);
   const auto at = [&](const Thresholds& t) {
-    return ImVec2{p0.x + 6 + (dim_value(t, dx) - lo_x) / span_x * (size.x - 12),
-                  p0.y + size.y - 6 - (dim_value(t, dy) - lo_y) / span_y * (size.y - 12)};
+    return ImVec2{a.x + 6 + (dim_value(t, dx) - lo_x) / span_x * (b.x - a.x - 12),
+                  b.y - 6 - (dim_value(t, dy) - lo_y) / span_y * (b.y - a.y - 12 - line)};
   };
   for (const Thresholds& t : snap.particles) draw->AddCircleFilled(at(t), 2.5f, IM_COL32(120, 200, 255, 200));
   draw->AddCircle(at(snap.best), 6, IM_COL32(255, 80, 80, 255), 0, 2);
 }
 }  // namespace
+
+void help_marker(const char* text) {
+  ImGui::TextDisabled("(?)");
+  if (!ImGui::IsItemHovered()) return;
+  // Above the marker and left of its right edge (it sits at the right of the side panel): what
+  // follows below, e.g. the progress line, stays visible.
+  ImGui::SetNextWindowPos({ImGui::GetItemRectMax().x, ImGui::GetItemRectMin().y - 4}, ImGuiCond_Always, {1, 1});
+  ImGui::BeginTooltip();
+  ImGui::TextUnformatted(text);
+  ImGui::EndTooltip();
+}
 
 void draw_train_panel(studio::StudioController& controller, UiState& ui) {
   TrainParams& p = ui.train_params;
@@ -70,17 +103,21 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
 
   if (!job.running()) {
     if (ImGui::Button("Start training")) controller.start_training(p);
-    if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("trains on the train split, reports both splits\n%s", controller.split_summary().c_str());
-    }
+    // A marker, not the button's tooltip: that one covered the progress line under the button.
+    ImGui::SameLine();
+    help_marker(("trains on the train split, reports both splits\n" + controller.split_summary()).c_str());
     if (controller.test_segment_count() == 0) ImGui::TextColored({1, 0.7f, 0.3f, 1}, "%s", controller.split_summary().c_str());
   } else if (ImGui::Button("Stop")) {
     controller.cancel_training();
   }
 
   if (const auto& snap = job.latest()) {
-    ImGui::Text("iteration %d/%d  best %.3f  %.1f s  ETA %.1f s", snap->iteration, snap->iterations,
-                snap->best_score, snap->elapsed_s, job.running() ? snap->eta_s : 0.0);
+    // Ends on the polish, so it agrees with the result's score below.
+    if (job.running()) {
+      ImGui::Text("%s  %.1f s  ETA %.1f s", studio::progress_line(*snap).c_str(), snap->elapsed_s, snap->eta_s);
+    } else {
+      ImGui::Text("%s  %.1f s", studio::progress_line(*snap).c_str(), snap->elapsed_s);
+    }
     ImGui::ProgressBar(snap->iterations ? static_cast<float>(snap->iteration) / static_cast<float>(snap->iterations) : 0,
                        {-1, 0});
     const std::vector<float> scores(job.best_scores().begin(), job.best_scores().end());
@@ -113,7 +150,18 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
                     studio::format_figure(c.boundary, c.boundary.precision()).c_str(),
                     studio::format_figure(c.boundary, c.boundary.recall()).c_str());
       }
-      if (ImGui::Button("Apply these thresholds")) controller.apply_training_result();
+      if (ImGui::Button("Apply these thresholds") && controller.apply_training_result()) {
+        ui.applied_thresholds = controller.thresholds();
+        ui.applied_message = studio::applied_summary(controller.test_segment_count() ? controller.test_counts()
+                                                                                     : controller.train_counts(),
+                                                     controller.test_segment_count() ? "test" : "train");
+      }
+      // Until the thresholds change again (a slider, an import, auto-train, another Apply).
+      if (ui.applied_thresholds && *ui.applied_thresholds == controller.thresholds()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{0.5f, 0.9f, 0.5f, 1});
+        ImGui::TextWrapped("%s", ui.applied_message.c_str());
+        ImGui::PopStyleColor();
+      }
     }
   }
   // Below the plots, so they keep their place. The parameters live in the project (as

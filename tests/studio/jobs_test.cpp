@@ -18,6 +18,7 @@
 #include "fieldlines/data/project.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fixtures.hpp"
+#include "gui/model/figures.hpp"
 #include "gui/model/job.hpp"
 #include "gui/model/message_queue.hpp"
 #include "gui/model/studio_controller.hpp"
@@ -186,6 +187,15 @@ TEST(TrainingJob, RunsToTheEndAndReportsEveryIteration) {
   EXPECT_FALSE(c.has_unsaved_settings());
   EXPECT_EQ(fieldlines::Project::load(data.file).thresholds, outcome->value().run.thresholds);
   EXPECT_LT(c.train_counts().marking.fn, missed);  // live metrics follow the applied thresholds
+  // Apply's confirmation names the applied figures on the test split, n/a where a class has none.
+  const fieldlines::Counts& test = c.test_counts();
+  EXPECT_EQ(fs::applied_summary(test, "test"),
+            "applied: marking P " + fs::format_figure(test.marking, test.marking.precision()) + " R " +
+                fs::format_figure(test.marking, test.marking.recall()) + " | boundary P " +
+                fs::format_figure(test.boundary, test.boundary.precision()) + " R " +
+                fs::format_figure(test.boundary, test.boundary.recall()) + " on the test split");
+  EXPECT_EQ(fs::applied_summary(fieldlines::Counts{}, "test"),
+            "applied: marking P n/a R n/a | boundary P n/a R n/a on the test split");
 }
 
 // The progress line ends on the polish, with the score the result shows ("best 82" beside
@@ -222,7 +232,7 @@ TEST(TrainingJob, ThePolishIsTheLastSnapshotWithTheResultsScore) {
   c.training().wait();
   ASSERT_TRUE(c.training().latest().has_value());
   EXPECT_EQ(c.training().latest()->phase, fieldlines::TrainingPhase::Pso);
-  EXPECT_EQ(fs::progress_line(*c.training().latest()).rfind("PSO iteration 2/2  best ", 0), 0u);
+  EXPECT_EQ(fs::progress_line(*c.training().latest()).rfind("PSO 2/2: best ", 0), 0u);
 }
 
 TEST(TrainingJob, CancelStopsEarlyWithTheBestSoFar) {
