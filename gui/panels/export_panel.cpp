@@ -1,4 +1,5 @@
 // Export tab: write the robot's thresholds file (path entry + folder browser), show it, import one.
+// The typed path is read by gui/model/export_path.hpp (~, the relative base, a missing folder).
 #include <algorithm>
 #include <exception>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <imgui_stdlib.h>
 
 #include "fieldlines/detect/atomic_file.hpp"
+#include "gui/model/export_path.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
@@ -18,24 +20,29 @@ namespace {
 namespace fs = std::filesystem;
 
 // A minimal folder browser: click a folder to enter it, ".." to go up; the chosen folder
-// replaces the folder part of the export path.
-void folder_browser(std::string& path) {
-  fs::path current = fs::path(path).parent_path();
-  if (current.empty()) current = fs::current_path();
-  ImGui::TextDisabled("%s", current.string().c_str());
-  ImGui::BeginChild("folders", {0, 120}, true);
-  const std::string file = fs::path(path).filename().string();
-  if (ImGui::Selectable("..")) path = (current.parent_path() / file).string();
-  std::vector<fs::path> folders;
+// replaces the folder part of the export path. Starts in the nearest existing folder of `folder`.
+void folder_browser(std::string& path, fs::path folder, const std::string& file) {
   std::error_code ec;
-  for (fs::directory_iterator it(current, ec), end; !ec && it != end; it.increment(ec)) {
+  while (folder.has_relative_path() && !fs::is_directory(folder, ec)) folder = folder.parent_path();
+  ImGui::TextDisabled("%s", folder.string().c_str());
+  ImGui::BeginChild("folders", {0, 120}, true);
+  if (ImGui::Selectable("..")) path = (folder.parent_path() / file).string();
+  std::vector<fs::path> folders;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
     if (it->is_directory(ec) && it->path().filename().string().rfind('.', 0) != 0) folders.push_back(it->path());
   }
   std::sort(folders.begin(), folders.end());
-  for (const fs::path& folder : folders) {
-    if (ImGui::Selectable((folder.filename().string() + "/").c_str())) path = (folder / file).string();
+  for (const fs::path& f : folders) {
+    if (ImGui::Selectable((f.filename().string() + "/").c_str())) path = (f / file).string();
   }
   ImGui::EndChild();
+}
+
+// The path as written, with symbolic links and ".." resolved, for the "wrote ..." line.
+std::string written_path(const fs::path& path) {
+  std::error_code ec;
+  const fs::path real = fs::weakly_canonical(path, ec);
+  return (ec ? path : real).string();
 }
 }  // namespace
 
@@ -57,41 +64,86 @@ void draw_export_panel(studio::StudioController& controller, UiState& ui) {
     ImGui::EndTable();
   }
   ImGui::Separator();
-  if (ui.export_path.empty() || fs::path(ui.export_path).is_relative()) {
-    ui.export_path = (controller.project_file().parent_path() / fs::path(ui.export_path).filename()).string();
+  // A newly opened project starts from its own default, never inside its image folder.
+  const fs::path& project = controller.project_file();
+  if (ui.export_path_project != project.string()) {
+    ui.export_path_project = project.string();
+    ui.export_path = studio::default_export_path(project, controller.project().images).string();
+    ui.export_message.clear();
+    ui.export_preview.clear();
   }
+  // Relative paths start in the project's folder: the same on every launch, from any shell.
+  const fs::path base = fs::absolute(project).lexically_normal().parent_path();
+  ImGui::TextUnformatted("Thresholds file for the robot");
+  ImGui::SameLine();
+  help_marker(("~ is your home folder ($HOME); a relative path starts in the project's folder,\n" + base.string() +
+               "\nEnter exports (when the folder exists).")
+                  .c_str());
   ImGui::SetNextItemWidth(-1);
-  ImGui::InputText("##path", &ui.export_path);
-  folder_browser(ui.export_path);
+  const bool enter = ImGui::InputText("##path", &ui.export_path, ImGuiInputTextFlags_EnterReturnsTrue);
+  // Resolved every frame, so the line below always says where Export will write.
+  const studio::ExportTarget target = studio::resolve_export_path(ui.export_path, base, studio::home_folder());
+  if (!target.ok()) {
+    ImGui::TextColored({1, 0.4f, 0.4f, 1}, "%s", target.error.c_str());
+  } else {
+    ImGui::TextDisabled("-> %s", target.path.string().c_str());
+    if (!target.folder_exists) {
+      ImGui::TextColored({1, 0.7f, 0.3f, 1}, "folder %s does not exist yet", target.path.parent_path().string().c_str());
+    }
+  }
   // Every action reports in one line under the buttons; a failure shows its reason instead.
-  const auto act = [&](const char* button, auto&& action) {
-    if (!ImGui::Button(button)) return;
+  const auto act = [&](bool pressed, auto&& action) {
+    if (!pressed) return;
     try {
       ui.export_message = action();
+      ui.export_failed = false;
     } catch (const std::exception& e) {
       ui.export_message = e.what();
+      ui.export_failed = true;
     }
   };
-  act("Export for the robot", [&] {
-    controller.export_thresholds(ui.export_path);
-    ui.export_preview = read_file(ui.export_path);
-    return "wrote " + ui.export_path;
+  const auto export_to = [&] {
+    controller.export_thresholds(target.path);
+    ui.export_preview = read_file(target.path);
+    return "wrote " + written_path(target.path);
+  };
+  ImGui::BeginDisabled(!target.ok());
+  if (target.ok() && !target.folder_exists) {
+    // Creating folders is never a side effect of a typo: it takes this button, not Enter.
+    act(ImGui::Button("Create folder and export"), [&] {
+      studio::create_parent_folders(target.path);
+      return export_to();
+    });
+    if (enter) {
+      ui.export_message = "the folder does not exist: press \"Create folder and export\" to create it";
+      ui.export_failed = true;
+    }
+  } else {
+    act(ImGui::Button("Export for the robot") || (enter && target.ok()), export_to);
+  }
+  ImGui::SameLine();
+  act(ImGui::Button("Import"), [&] {
+    controller.import_thresholds(target.path);
+    ui.export_preview = read_file(target.path);
+    return "imported " + written_path(target.path);
   });
   ImGui::SameLine();
-  act("Import", [&] {
-    controller.import_thresholds(ui.export_path);
-    ui.export_preview = read_file(ui.export_path);
-    return "imported " + ui.export_path;
-  });
-  ImGui::SameLine();
-  act("Export labels (CSV)", [&] {
-    const fs::path csv = fs::path(ui.export_path).parent_path() /
-                         (controller.project_file().stem().string() + "-labels.csv");
+  act(ImGui::Button("Export labels (CSV)"), [&] {
+    const fs::path csv = target.path.parent_path() / (project.stem().string() + "-labels.csv");
     const std::size_t rows = controller.export_labels_csv(csv);
-    return "wrote " + std::to_string(rows) + " labelled segments to " + csv.string() +
+    return "wrote " + std::to_string(rows) + " labelled segments to " + written_path(csv) +
            " (the authors' reference CSV; `fieldlines train` reads it)";
   });
-  ImGui::TextWrapped("%s", ui.export_message.c_str());
+  ImGui::EndDisabled();
+  if (ui.export_failed) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{1, 0.4f, 0.4f, 1});
+    ImGui::TextWrapped("%s", ui.export_message.c_str());
+    ImGui::PopStyleColor();
+  } else {
+    ImGui::TextWrapped("%s", ui.export_message.c_str());
+  }
+  folder_browser(ui.export_path, target.ok() ? target.path.parent_path() : base,
+                 target.ok() ? target.path.filename().string() : "robot-thresholds.json");
   if (!ui.export_preview.empty()) {
     ImGui::BeginChild("preview", {0, 0}, true, ImGuiWindowFlags_HorizontalScrollbar);
     ImGui::TextUnformatted(ui.export_preview.c_str());

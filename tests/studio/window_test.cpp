@@ -7,6 +7,7 @@
 #include <signal.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <chrono>
 #include <cstdlib>
@@ -19,6 +20,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
 #include "fieldlines/synth/demo.hpp"
 #include "fixtures.hpp"
 #include "gui/model/overlay_style.hpp"
@@ -190,6 +192,75 @@ TEST_F(StudioWindow, LabelByMouseAndKeysUndoRedoAndSurviveSigkill) {
   const auto reopened = fieldlines::Project::load(project_);
   EXPECT_EQ(reopened.images[1].segments[5].label, Label::Boundary);
   EXPECT_EQ(reopened.images[0].segments[6].label, Label::Marking);
+}
+
+// Rows of the side panel whose left edge has colour `c` (the path field's frame, a button), as
+// the centres of their runs, top to bottom: the Export tab's widgets, found the way a user sees them.
+std::vector<int> rows_of_colour(const cv::Mat& shot, std::array<int, 3> c) {
+  std::vector<int> centres;
+  int run_start = -1;
+  for (int y = 30; y <= shot.rows - 30; ++y) {
+    const cv::Vec3b p = shot.at<cv::Vec3b>(y, 878);  // BGR, just inside the side panel
+    const bool hit = std::abs(p[2] - c[0]) <= 8 && std::abs(p[1] - c[1]) <= 8 && std::abs(p[0] - c[2]) <= 8;
+    if (hit && run_start < 0) run_start = y;
+    if (!hit && run_start >= 0) {
+      if (y - run_start >= 10) centres.push_back((run_start + y) / 2);
+      run_start = -1;
+    }
+  }
+  return centres;
+}
+
+// Export path as a user types it: click the field, Ctrl+A (from idle, where ImGui 1.86 lost the
+// tap), "~/x/robot.json"; the folder is not there, so Enter writes nothing and the first button
+// offers to create it; the file lands in $HOME/x, nothing named "~" anywhere.
+TEST_F(StudioWindow, ExportPathExpandsTildeAndCreatesTheFolderWhenAsked) {
+  const fs::path home = dir() / "home";
+  fs::create_directories(home);
+  const char* old_home = std::getenv("HOME");
+  const std::string saved_home = old_home ? old_home : "";
+  setenv("HOME", home.c_str(), 1);  // the studio inherits the test's environment
+  auto studio = start_studio();
+  if (old_home) setenv("HOME", saved_home.c_str(), 1);
+  else unsetenv("HOME");
+  ASSERT_TRUE(studio->running()) << log();
+
+  ASSERT_EQ(run(x("mousemove " + std::to_string(kWidth - 60) + " 780")), 0);
+  ASSERT_EQ(run(x("key F6")), 0);
+  ASSERT_TRUE(wait_for([&] { return state()["panel"] == "Export"; }, 10s));
+  std::this_thread::sleep_for(400ms);
+  const std::array<int, 3> field_bg{29, 47, 73}, button_bg{36, 70, 110};  // ImGui's dark style
+  const std::vector<int> fields = rows_of_colour(cv::imread(screenshot("export-before").string()), field_bg);
+  ASSERT_FALSE(fields.empty()) << "no path field on the Export tab";
+  ASSERT_EQ(run(x("mousemove 1000 " + std::to_string(fields.front()) + " click 1")), 0);
+  ASSERT_EQ(run(x("mousemove " + std::to_string(kWidth - 60) + " 780")), 0);
+  // Five rounds, each from idle: a lost select-all in any of them leaves the default path in
+  // the field around the typed text, and the file is not written where expected.
+  for (int round = 0; round < 5; ++round) {
+    std::this_thread::sleep_for(1s);
+    ASSERT_EQ(run(x("key ctrl+a")), 0);
+    std::this_thread::sleep_for(150ms);  // a person's pause before typing on
+    ASSERT_EQ(run(x("type '~/x/robot.json'")), 0);
+  }
+  ASSERT_EQ(run(x("key Return")), 0);
+  std::this_thread::sleep_for(600ms);
+  EXPECT_FALSE(fs::exists(home / "x")) << "Enter created a folder without being asked";
+
+  const std::vector<int> buttons = rows_of_colour(cv::imread(screenshot("export-missing-folder").string()), button_bg);
+  ASSERT_FALSE(buttons.empty()) << "no buttons on the Export tab";
+  ASSERT_EQ(run(x("mousemove 900 " + std::to_string(buttons.front()) + " click 1")), 0);  // "Create folder and export"
+  const fs::path written = home / "x" / "robot.json";
+  ASSERT_TRUE(wait_for([&] { return fs::exists(written); }, 10s)) << "nothing written to " << written << "\n" << log();
+  // The robot's file, with the project's thresholds.
+  EXPECT_EQ(fieldlines::load_thresholds_file(written).thresholds, fieldlines::Project::load(project_).thresholds);
+  for (const fs::path& folder : {dir(), project_.parent_path(), home}) {
+    for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+      EXPECT_EQ(entry.path().filename().string().find('~'), std::string::npos) << entry.path();
+    }
+  }
+  screenshot("export-written");
+  ASSERT_EQ(run(x("key ctrl+q")), 0);
+  EXPECT_EQ(studio->wait(), 0) << log();
 }
 
 TEST_F(StudioWindow, PanelScreenshotsOnTheDemoProject) {

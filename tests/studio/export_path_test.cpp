@@ -1,0 +1,101 @@
+// The Export tab's path rules without a window: ~ expansion, the relative base, what exists,
+// the default location and creating a missing folder.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "fieldlines/detect/error.hpp"
+#include "fixtures.hpp"
+#include "gui/model/export_path.hpp"
+
+namespace fs = std::filesystem;
+using fieldlines::studio::default_export_path;
+using fieldlines::studio::resolve_export_path;
+
+TEST(ExportPath, TildeExpandsFromHome) {
+  studio_test::TempDir home("home");
+  const fs::path base = "/srv/project";
+  const auto t = resolve_export_path("~/x/robot.json", base, home.path().string());
+  ASSERT_TRUE(t.ok()) << t.error;
+  EXPECT_EQ(t.path, home.path() / "x" / "robot.json");
+  EXPECT_FALSE(t.folder_exists);  // ~/x does not exist yet: the panel offers to create it
+
+  fs::create_directories(home.path() / "x");
+  EXPECT_TRUE(resolve_export_path("~/x/robot.json", base, home.path().string()).folder_exists);
+  // A file straight in $HOME, and the folder itself is no file name.
+  EXPECT_EQ(resolve_export_path("~/robot.json", base, home.path().string()).path, home.path() / "robot.json");
+  EXPECT_FALSE(resolve_export_path("~", base, home.path().string()).ok());
+  EXPECT_FALSE(resolve_export_path("~/", base, home.path().string()).ok());
+}
+
+TEST(ExportPath, TildeWithoutHomeOrWithAUserIsAnErrorNotAFolderCalledTilde) {
+  const auto no_home = resolve_export_path("~/robot.json", "/srv/project", "");
+  EXPECT_FALSE(no_home.ok());
+  EXPECT_TRUE(no_home.path.empty());
+  EXPECT_NE(no_home.error.find("HOME"), std::string::npos) << no_home.error;
+  const auto user = resolve_export_path("~bob/robot.json", "/srv/project", "/home/me");
+  EXPECT_FALSE(user.ok());
+  EXPECT_TRUE(user.path.empty());
+  // A tilde inside a name is an ordinary character.
+  EXPECT_EQ(resolve_export_path("a~b.json", "/srv/project", "/home/me").path, fs::path("/srv/project/a~b.json"));
+}
+
+TEST(ExportPath, RelativePathsStartAtTheBaseAndAreNormalised) {
+  studio_test::TempDir dir("base");
+  const auto here = resolve_export_path("robot.json", dir.path(), "/home/me");
+  ASSERT_TRUE(here.ok()) << here.error;
+  EXPECT_EQ(here.path, dir.path() / "robot.json");
+  EXPECT_TRUE(here.folder_exists);
+  EXPECT_EQ(resolve_export_path("sub/../up/./r.json", dir.path(), "").path, dir.path() / "up" / "r.json");
+  EXPECT_EQ(resolve_export_path("../r.json", dir.path(), "").path, dir.path().parent_path() / "r.json");
+  // Absolute paths ignore the base; surrounding blanks (a pasted line) are dropped.
+  EXPECT_EQ(resolve_export_path("  /tmp/r.json\n", dir.path(), "").path, fs::path("/tmp/r.json"));
+}
+
+TEST(ExportPath, FoldersFilesInTheWayAndEmptyTextAreErrors) {
+  studio_test::TempDir dir("errors");
+  EXPECT_FALSE(resolve_export_path("", dir.path(), "").ok());
+  EXPECT_FALSE(resolve_export_path("   ", dir.path(), "").ok());
+  fs::create_directories(dir.path() / "existing");
+  const auto folder = resolve_export_path("existing", dir.path(), "");
+  EXPECT_FALSE(folder.ok());
+  EXPECT_NE(folder.error.find("folder"), std::string::npos) << folder.error;
+  EXPECT_FALSE(resolve_export_path("new/", dir.path(), "").ok());
+  std::ofstream(dir.path() / "plain.txt") << "x";
+  const auto under_file = resolve_export_path("plain.txt/robot.json", dir.path(), "");
+  EXPECT_FALSE(under_file.ok());
+  EXPECT_NE(under_file.error.find("not a folder"), std::string::npos) << under_file.error;
+}
+
+TEST(ExportPath, DefaultIsNeverInsideTheImageFolder) {
+  // A folder opened as a project: the project file lies among the images.
+  std::vector<fieldlines::ImageEntry> images(2);
+  images[0].path = "0001.png";
+  images[1].path = "0002.png";
+  EXPECT_EQ(default_export_path("/data/nao-field/fieldlines-project.json", images),
+            fs::path("/data/nao-field-thresholds.json"));
+  // A project file beside its image folder: the file goes beside the project file.
+  images[0].path = "frames/0001.png";
+  images[1].path = "frames/0002.png";
+  EXPECT_EQ(default_export_path("/data/match/project.json", images), fs::path("/data/match/robot-thresholds.json"));
+  EXPECT_EQ(default_export_path("/data/match/project.json", {}), fs::path("/data/match/robot-thresholds.json"));
+  // Relative project files are made absolute.
+  EXPECT_TRUE(default_export_path("project.json", {}).is_absolute());
+}
+
+TEST(ExportPath, CreatesMissingFoldersOrSaysWhichOneFailed) {
+  studio_test::TempDir dir("create");
+  const fs::path file = dir.path() / "a" / "b" / "robot.json";
+  fieldlines::studio::create_parent_folders(file);
+  EXPECT_TRUE(fs::is_directory(dir.path() / "a" / "b"));
+  EXPECT_FALSE(fs::exists(file));  // only the folders
+  std::ofstream(dir.path() / "plain.txt") << "x";
+  try {
+    fieldlines::studio::create_parent_folders(dir.path() / "plain.txt" / "sub" / "robot.json");
+    FAIL() << "a folder under a file was created";
+  } catch (const fieldlines::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("plain.txt"), std::string::npos) << e.what();
+  }
+}
