@@ -20,44 +20,38 @@ namespace fieldlines::elsed {
 // bound by memory latency, one dependent step after another).
 inline bool step_along_gradient(EdgeDir dir, const GradientMaps& g, Pixel& px, Pixel& last,
                                 bool request_state = false) {
+  // The four cases (along or turning, horizontal or vertical edge) are one: a step of one pixel
+  // on one axis, then a choice among the pixels beside on the other. Written as one path of
+  // selects rather than branches: the choices depend on the data and would be mispredicted,
+  // delaying the next step's loads.
   const int w = g.width, h = g.height;
   const std::int16_t* m = g.mag.data();
   const Pixel prev = last;
   last = px;
-  const auto at = [&](int x, int y) {
-    if (request_state) __builtin_prefetch(g.state.data() + y * w + x);
-    return m[y * w + x];
-  };
-  if (dir == EdgeDir::Horizontal) {
-    if (prev.x != px.x) {  // moving left or right: three candidates ahead
-      const int sx = prev.x < px.x ? 1 : -1;
-      if ((sx > 0 ? px.x == w - 1 : px.x == 0) || px.y == 0 || px.y == h - 1) return false;
-      px.x += sx;
-      const int up = at(px.x, px.y - 1), mid = at(px.x, px.y), down = at(px.x, px.y + 1);
-      if (up > mid && up > down) --px.y;
-      else if (down > mid && down > up) ++px.y;
-    } else {  // the previous step was vertical: turn onto a diagonal
-      const int sy = prev.y < px.y ? 1 : -1;
-      if ((sy > 0 ? px.y == h - 1 : px.y == 0) || px.x == 0 || px.x == w - 1) return false;
-      px.y += sy;
-      px.x += at(px.x - 1, px.y) > at(px.x + 1, px.y) ? -1 : 1;
-    }
-  } else {
-    if (prev.y != px.y) {  // moving up or down
-      const int sy = prev.y < px.y ? 1 : -1;
-      if ((sy > 0 ? px.y == h - 1 : px.y == 0) || px.x == 0 || px.x == w - 1) return false;
-      px.y += sy;
-      const int right = at(px.x + 1, px.y), mid = at(px.x, px.y), left = at(px.x - 1, px.y);
-      if (right > mid && right > left) ++px.x;
-      else if (left > mid && left > right) --px.x;
-    } else {
-      const int sx = prev.x < px.x ? 1 : -1;
-      if ((sx > 0 ? px.x == w - 1 : px.x == 0) || px.y == 0 || px.y == h - 1) return false;
-      px.x += sx;
-      px.y += at(px.x, px.y - 1) > at(px.x, px.y + 1) ? -1 : 1;
-    }
+  const bool horizontal = dir == EdgeDir::Horizontal;
+  const bool three = horizontal ? prev.x != px.x : prev.y != px.y;  // along: three candidates
+  const bool step_x = horizontal == three;
+  int a = step_x ? px.x : px.y;
+  const int c = step_x ? px.y : px.x, pa = step_x ? prev.x : prev.y;
+  const int na = step_x ? w : h, nc = step_x ? h : w;
+  const int s = pa < a ? 1 : -1;
+  if ((s > 0 ? a == na - 1 : a == 0) || c == 0 || c == nc - 1) return false;
+  a += s;
+  const int cross = step_x ? w : 1;  // index step to the pixel beside
+  const int i = step_x ? c * w + a : a * w + c;
+  if (request_state) {
+    __builtin_prefetch(g.state.data() + i - cross);
+    __builtin_prefetch(g.state.data() + i);
+    __builtin_prefetch(g.state.data() + i + cross);
   }
-  return at(px.x, px.y) != 0;
+  const int lo = m[i - cross], mid = m[i], hi = m[i + cross];
+  // Along: the strictly strongest of the three, the middle one on ties. Turning: the stronger
+  // diagonal, the +1 one on ties.
+  const int off = three ? static_cast<int>(hi > mid && hi > lo) - static_cast<int>(lo > mid && lo > hi)
+                        : (lo > hi ? -1 : 1);
+  const int nc_new = c + off;
+  px = step_x ? Pixel{a, nc_new} : Pixel{nc_new, a};
+  return m[i + off * cross] != 0;
 }
 
 // The pixel one step behind `px` when starting to draw in direction `s`.
