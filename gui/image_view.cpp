@@ -60,9 +60,14 @@ void segment_tooltip(const Segment& s, Label predicted, const SegmentFeatures& f
 
 void draw_image_view(studio::StudioController& controller, ImageViewState& state, ImVec2 size) {
   const cv::Mat& image = controller.image();
-  if (state.texture_generation != controller.image_generation()) {
+  // With "paint with no segment" on, the texture is the tinted copy, refreshed when it changes.
+  const bool tinted_changed = state.show_missed &&
+                              state.missed.update(image, controller.segments(), controller.image_generation());
+  const bool shows_tint = state.show_missed && !state.missed.tinted().empty();
+  if (state.texture_generation != controller.image_generation() || tinted_changed || shows_tint != state.texture_tinted) {
     const bool new_size = image.cols != state.texture.width() || image.rows != state.texture.height();
-    state.texture.upload(image);
+    state.texture.upload(shows_tint ? state.missed.tinted() : image);
+    state.texture_tinted = shows_tint;
     state.fit_requested |= new_size;
     state.texture_generation = controller.image_generation();
   }

@@ -6,6 +6,7 @@
 
 #include "gui/gl_texture.hpp"
 #include "gui/model/hover_cycle.hpp"
+#include "gui/model/missed_paint_view.hpp"
 #include "gui/model/overlay_style.hpp"
 #include "gui/model/studio_controller.hpp"
 #include "gui/model/view_settings.hpp"
@@ -20,10 +21,13 @@ struct ImageViewState {
   float pick_radius_px = 8;      // hover reach, in screen pixels at every zoom
   bool fit_requested = true;
   bool show_segments = true;
+  bool show_missed = false;         // tint paint that has no segment (Label tab)
+  studio::MissedPaintView missed;   // its cached computation
   studio::ViewSettings settings;  // line width (Label tab)
   studio::HoverCycle cycle;       // which of the segments under the cursor is hovered (Space: next)
   GlTexture texture;
   std::size_t texture_generation = static_cast<std::size_t>(-1);
+  bool texture_tinted = false;  // the texture holds missed.tinted(), not the plain image
   bool rect_active = false;
   studio::Vec2 rect_start{};
   // The segment Tab brought into view (StudioController::focus_most_uncertain): it stays the

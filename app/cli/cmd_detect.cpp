@@ -45,7 +45,8 @@ options:
   --csv OUT         write every segment in the reference annotation CSV format
                     (img_path = file name, B,G,R channels, reference y sign, label columns)
   --draw DIR        write an overlay per image to DIR/<name>.png
-                    (marking magenta, boundary orange, none azure; legend top-left)
+                    (the studio's palette: marking magenta, boundary blue, none yellow,
+                    each over a dark outline; legend top-left)
   --threads N       images processed in parallel, one detector per thread (default 1);
                     outputs keep the input order
   --quiet           no per-image lines on stdout, no progress on stderr

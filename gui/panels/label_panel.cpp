@@ -64,6 +64,17 @@ void draw_label_panel(studio::StudioController& controller, UiState& ui) {
     ui.image_view.settings.set_line_width(line_width);
   }
   draw_legend(ui.image_view.mode);
+  ImGui::Checkbox("show paint with no segment", &ui.image_view.show_missed);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("tints cyan the bright, thin, colourless pixels on turf that no segment explains:\n"
+                      "lines the detector missed (tight curves, worn paint), so there is nothing to label;\n"
+                      "lower the detector's thresholds (Thresholds tab) and re-detect to find them");
+  }
+  if (ui.image_view.show_missed) {
+    const MissedPaint& m = ui.image_view.missed.found();
+    ImGui::SameLine();
+    ImGui::TextDisabled("%zu px in %zu places", m.pixels, m.blobs);
+  }
 
   ImGui::Separator();
   if (ImGui::Button("Label the rest as none")) controller.label_rest_as_none();

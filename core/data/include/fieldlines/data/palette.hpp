@@ -31,6 +31,9 @@ inline constexpr Rgb kNone{255, 210, 0};        // yellow
 inline constexpr Rgb kUnlabelled{255, 70, 20};  // vermilion: still to do, must stand out on turf
 inline constexpr Rgb kQuiet{150, 150, 150};     // grey (the studio's agreed "not a feature")
 inline constexpr Rgb kOutline{10, 10, 10};      // under every segment
+// Paint the detector found no segment for (fieldlines/data/missed_paint.hpp), tinted in the
+// picture itself: a hue no label uses, far from turf (Delta-E ~69) and visible on white (~51).
+inline constexpr Rgb kMissedPaint{0, 255, 255};  // cyan
 inline constexpr float kOutlineExtra = 3;       // outline width = line width + this, pixels
 
 constexpr Rgb label_rgb(Label label) {
