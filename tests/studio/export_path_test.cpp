@@ -4,11 +4,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <vector>
 
 #include "fieldlines/detect/error.hpp"
 #include "fixtures.hpp"
 #include "gui/model/export_path.hpp"
+#include "gui/model/studio_controller.hpp"
 
 namespace fs = std::filesystem;
 using fieldlines::studio::default_export_path;
@@ -98,4 +100,24 @@ TEST(ExportPath, CreatesMissingFoldersOrSaysWhichOneFailed) {
   } catch (const fieldlines::Error& e) {
     EXPECT_NE(std::string(e.what()).find("plain.txt"), std::string::npos) << e.what();
   }
+}
+
+// A folder nobody can write to (not even root: /proc takes no new files) gives an error that
+// names the path, and nothing is written: what the panel shows instead of "wrote".
+TEST(ExportPath, UnwritablePlacesAreClearErrorsAndWriteNothing) {
+  studio_test::TempDir dir("unwritable");
+  const fs::path file = studio_test::write_project(dir.path(), 1, 4);
+  const fieldlines::studio::StudioController c(fieldlines::Project::load(file), file);
+  const auto target = resolve_export_path("/proc/robot-thresholds.json", dir.path(), "");
+  ASSERT_TRUE(target.ok()) << target.error;
+  EXPECT_TRUE(target.folder_exists);
+  try {
+    c.export_thresholds(target.path);
+    FAIL() << "exported into /proc";
+  } catch (const fieldlines::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/proc/robot-thresholds.json"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(target.path));
+  EXPECT_THROW(fieldlines::studio::create_parent_folders("/proc/fieldlines-new/robot.json"), fieldlines::Error);
+  EXPECT_FALSE(fs::exists("/proc/fieldlines-new"));
 }
