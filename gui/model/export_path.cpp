@@ -34,7 +34,8 @@ ExportTarget resolve_export_path(std::string_view typed, const fs::path& base, s
   } else {
     path = fs::path(std::string(typed));
   }
-  if (path.is_relative()) path = base / path;
+  target.from_base = path.is_relative();
+  if (target.from_base) path = base / path;
   path = fs::absolute(path).lexically_normal();
 
   std::error_code ec;

@@ -15,6 +15,7 @@ struct ExportTarget {
   std::filesystem::path path;    // absolute and lexically normal; empty when `error` is set
   std::string error;             // why nothing can be written there (empty text, a folder, ...)
   bool folder_exists = false;    // path's parent folder exists (when false: offer to create it)
+  bool from_base = false;        // the typed path was relative: it starts at `base`
   bool ok() const { return error.empty(); }
 };
 

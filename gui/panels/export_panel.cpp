@@ -38,6 +38,15 @@ void folder_browser(std::string& path, fs::path folder, const std::string& file)
   ImGui::EndChild();
 }
 
+const ImVec4 kErrorColour{1, 0.4f, 0.4f, 1};
+
+// Long paths wrap instead of running off the side panel.
+void wrapped_text(const ImVec4& colour, const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
 // The path as written, with symbolic links and ".." resolved, for the "wrote ..." line.
 std::string written_path(const fs::path& path) {
   std::error_code ec;
@@ -84,11 +93,12 @@ void draw_export_panel(studio::StudioController& controller, UiState& ui) {
   // Resolved every frame, so the line below always says where Export will write.
   const studio::ExportTarget target = studio::resolve_export_path(ui.export_path, base, studio::home_folder());
   if (!target.ok()) {
-    ImGui::TextColored({1, 0.4f, 0.4f, 1}, "%s", target.error.c_str());
+    wrapped_text(kErrorColour, target.error);
   } else {
-    ImGui::TextDisabled("-> %s", target.path.string().c_str());
+    wrapped_text(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),
+                 "-> " + target.path.string() + (target.from_base ? "  (from the project folder)" : ""));
     if (!target.folder_exists) {
-      ImGui::TextColored({1, 0.7f, 0.3f, 1}, "folder %s does not exist yet", target.path.parent_path().string().c_str());
+      wrapped_text({1, 0.7f, 0.3f, 1}, "folder " + target.path.parent_path().string() + " does not exist yet");
     }
   }
   // Every action reports in one line under the buttons; a failure shows its reason instead.
@@ -135,13 +145,7 @@ void draw_export_panel(studio::StudioController& controller, UiState& ui) {
            " (the authors' reference CSV; `fieldlines train` reads it)";
   });
   ImGui::EndDisabled();
-  if (ui.export_failed) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{1, 0.4f, 0.4f, 1});
-    ImGui::TextWrapped("%s", ui.export_message.c_str());
-    ImGui::PopStyleColor();
-  } else {
-    ImGui::TextWrapped("%s", ui.export_message.c_str());
-  }
+  wrapped_text(ui.export_failed ? kErrorColour : ImGui::GetStyleColorVec4(ImGuiCol_Text), ui.export_message);
   folder_browser(ui.export_path, target.ok() ? target.path.parent_path() : base,
                  target.ok() ? target.path.filename().string() : "robot-thresholds.json");
   if (!ui.export_preview.empty()) {

@@ -50,6 +50,9 @@ TEST(ExportPath, RelativePathsStartAtTheBaseAndAreNormalised) {
   ASSERT_TRUE(here.ok()) << here.error;
   EXPECT_EQ(here.path, dir.path() / "robot.json");
   EXPECT_TRUE(here.folder_exists);
+  EXPECT_TRUE(here.from_base);  // the panel says where a relative path starts
+  EXPECT_FALSE(resolve_export_path("/tmp/r.json", dir.path(), "").from_base);
+  EXPECT_FALSE(resolve_export_path("~/r.json", dir.path(), "/home/me").from_base);
   EXPECT_EQ(resolve_export_path("sub/../up/./r.json", dir.path(), "").path, dir.path() / "up" / "r.json");
   EXPECT_EQ(resolve_export_path("../r.json", dir.path(), "").path, dir.path().parent_path() / "r.json");
   // Absolute paths ignore the base; surrounding blanks (a pasted line) are dropped.
