@@ -41,11 +41,39 @@ class StudioCrash : public studio_test::StudioUnderX {
     project_ = studio_test::write_project(dir(), 12, 400, 640, 480);
     segments_ = fieldlines::Project::load(project_).images[0].segments;
   }
+  // Waits until a save's temporary file appears, then `in_save` more, and SIGKILLs the studio
+  // (and the key sender) there.
+  void kill_inside_a_save(studio_test::Child& studio, studio_test::Child& keys, std::chrono::microseconds in_save) {
+    const int watch = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+    ASSERT_GE(watch, 0);
+    ASSERT_GE(::inotify_add_watch(watch, dir().c_str(), IN_CREATE), 0);
+    EXPECT_TRUE(wait_for_creation(watch, fieldlines::temporary_prefix(project_), 10s)) << "no save started";
+    std::this_thread::sleep_for(in_save);
+    ::close(watch);
+    kill_both(studio, keys);
+  }
+  static void kill_both(studio_test::Child& studio, studio_test::Child& keys) {
+    studio.kill(SIGKILL);
+    studio.wait();
+    keys.kill(SIGKILL);
+  }
+  // The project on disk loads and has the original's images and segment geometry.
+  fieldlines::Project load_intact(const fieldlines::Project& original, int kill) const {
+    fieldlines::Project now;
+    EXPECT_NO_THROW(now = fieldlines::Project::load(project_)) << "kill " << kill << " left a project that does not load";
+    EXPECT_EQ(now.images.size(), original.images.size());
+    for (std::size_t i = 0; i < std::min(now.images.size(), original.images.size()); ++i) {
+      const auto& a = now.images[i].segments;
+      const auto& b = original.images[i].segments;
+      EXPECT_EQ(a.size(), b.size()) << "kill " << kill << ", image " << i;
+      for (std::size_t j = 0; j < std::min(a.size(), b.size()); ++j) EXPECT_FLOAT_EQ(a[j].x0, b[j].x0);
+    }
+    return now;
+  }
 };
 
 TEST_F(StudioCrash, KilledDuringAutosavesLeavesOldOrCompleteProject) {
   const fieldlines::Project original = fieldlines::Project::load(project_);
-  const std::string temp_prefix = fieldlines::temporary_prefix(project_);
   std::mt19937 rng(20261129);
   std::uniform_int_distribution<int> anywhere_ms(0, 1500), in_save_us(0, 100);
   int mid_save = 0, changed = 0;
@@ -60,29 +88,18 @@ TEST_F(StudioCrash, KilledDuringAutosavesLeavesOldOrCompleteProject) {
                             {"DISPLAY=" + display_.name}, dir() / "xdotool.log");
     if (k % 3 == 2) {
       std::this_thread::sleep_for(200ms);  // let a few saves complete first
-      const int watch = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
-      ASSERT_GE(watch, 0);
-      ASSERT_GE(::inotify_add_watch(watch, dir().c_str(), IN_CREATE), 0);
-      EXPECT_TRUE(wait_for_creation(watch, temp_prefix, 10s)) << "no save started";
-      std::this_thread::sleep_for(std::chrono::microseconds(in_save_us(rng)));
-      ::close(watch);
+      kill_inside_a_save(*studio, keys, std::chrono::microseconds(in_save_us(rng)));
     } else {
       std::this_thread::sleep_for(std::chrono::milliseconds(anywhere_ms(rng)));
+      kill_both(*studio, keys);
     }
-    studio->kill(SIGKILL);
-    studio->wait();
-    keys.kill(SIGKILL);
     if (temporaries(project_) > temps_before) ++mid_save;
 
-    fieldlines::Project now;
-    ASSERT_NO_THROW(now = fieldlines::Project::load(project_)) << "kill " << k << " left a project that does not load";
-    ASSERT_EQ(now.images.size(), original.images.size());
+    const fieldlines::Project now = load_intact(original, k);
+    if (HasFailure()) return;
     for (std::size_t i = 0; i < now.images.size(); ++i) {
       const auto& a = now.images[i].segments;
-      const auto& b = original.images[i].segments;
-      ASSERT_EQ(a.size(), b.size()) << "kill " << k << ", image " << i;
       for (std::size_t j = 0; j < a.size(); ++j) {
-        EXPECT_FLOAT_EQ(a[j].x0, b[j].x0);
         // Only the segments driven so far may carry labels, and only the ones M and B give.
         const bool driven = i == 0 && j % 7 == 0 && j <= target;
         if (!driven) {
@@ -103,7 +120,6 @@ TEST_F(StudioCrash, KilledDuringAutosavesLeavesOldOrCompleteProject) {
 TEST_F(StudioCrash, KilledWhileProposingAcceptingAndRetrainingLeavesAValidProject) {
   constexpr int kReviewKills = 8;
   const fieldlines::Project original = fieldlines::Project::load(project_);
-  const std::string temp_prefix = fieldlines::temporary_prefix(project_);
   std::mt19937 rng(20261201);
   std::uniform_int_distribution<int> anywhere_ms(300, 2500), in_save_us(0, 100);
   int progressed = 0;
@@ -115,33 +131,18 @@ TEST_F(StudioCrash, KilledWhileProposingAcceptingAndRetrainingLeavesAValidProjec
                              "ctrl+z", "Return"},
                             {"DISPLAY=" + display_.name}, dir() / "xdotool.log");
     if (k % 2 == 1) {
-      const int watch = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
-      ASSERT_GE(watch, 0);
-      ASSERT_GE(::inotify_add_watch(watch, dir().c_str(), IN_CREATE), 0);
       std::this_thread::sleep_for(300ms);
-      EXPECT_TRUE(wait_for_creation(watch, temp_prefix, 10s)) << "no save started";
-      std::this_thread::sleep_for(std::chrono::microseconds(in_save_us(rng)));
-      ::close(watch);
+      kill_inside_a_save(*studio, keys, std::chrono::microseconds(in_save_us(rng)));
     } else {
       std::this_thread::sleep_for(std::chrono::milliseconds(anywhere_ms(rng)));
+      kill_both(*studio, keys);
     }
-    studio->kill(SIGKILL);
-    studio->wait();
-    keys.kill(SIGKILL);
-
-    fieldlines::Project now;
-    ASSERT_NO_THROW(now = fieldlines::Project::load(project_)) << "kill " << k << " left a project that does not load";
-    ASSERT_EQ(now.images.size(), original.images.size());
+    const fieldlines::Project now = load_intact(original, k);
+    if (HasFailure()) return;
     for (std::size_t i = 0; i < now.images.size(); ++i) {
-      const auto& a = now.images[i].segments;
-      const auto& b = original.images[i].segments;
-      ASSERT_EQ(a.size(), b.size()) << "kill " << k << ", image " << i;
       // Proposals are all or nothing per image (an accepted one stays, for undo, under its label).
       const auto& proposals = now.images[i].proposals;
-      EXPECT_TRUE(proposals.empty() || proposals.size() == a.size()) << "kill " << k << ", image " << i;
-      for (std::size_t j = 0; j < a.size(); ++j) {
-        EXPECT_FLOAT_EQ(a[j].x0, b[j].x0);
-      }
+      EXPECT_TRUE(proposals.empty() || proposals.size() == now.images[i].segments.size()) << "kill " << k << ", image " << i;
     }
     most_labels = std::max(most_labels, now.labelled_count());
     progressed += now.labelled_count() > 0;
