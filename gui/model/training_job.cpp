@@ -2,21 +2,11 @@
 
 #include <chrono>
 #include <cstdio>
-#include <span>
 
+#include "fieldlines/train/metrics.hpp"
 #include "gui/model/figures.hpp"
 
 namespace fieldlines::studio {
-
-namespace {
-Counts count_with(std::span<const Segment> segments, const Thresholds& t) {
-  Counts counts;
-  for (const Segment& s : segments) {
-    if (s.label != Label::Unlabelled) tally(counts, s.label, classify(s, t));
-  }
-  return counts;
-}
-}  // namespace
 
 std::string progress_line(const TrainingSnapshot& snap) {
   char line[128];
@@ -59,8 +49,8 @@ void TrainingJob::start(std::vector<Segment> train_set, std::vector<Segment> tes
     };
     TrainingResult r;
     r.run = train(train_set, initial, params, on_progress, stop);
-    r.train_counts = count_with(train_set, r.run.thresholds);
-    r.test_counts = count_with(test_set, r.run.thresholds);
+    r.train_counts = count_labelled(train_set, r.run.thresholds);
+    r.test_counts = count_labelled(test_set, r.run.thresholds);
     return r;
   });
 }
