@@ -77,11 +77,11 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
     if (i + 8 <= seg.last_index()) {
       // The pixels are known ahead: have their gradient and colour rows in flight.
       const Pixel ahead = chain[i + 8];
-      const int a = ahead.y * w + ahead.x;
+      const int a = ahead.y * w + ahead.x, below = std::min(ahead.y + 1, h - 1) * w + ahead.x;
       __builtin_prefetch(maps.dx.data() + a);
       __builtin_prefetch(maps.dy.data() + a);
-      __builtin_prefetch(maps.dx.data() + a + w);
-      __builtin_prefetch(maps.dy.data() + a + w);
+      __builtin_prefetch(maps.dx.data() + below);
+      __builtin_prefetch(maps.dy.data() + below);
       __builtin_prefetch(bgr.ptr<std::uint8_t>(std::max(ahead.y - 1, 0)) + 3 * ahead.x);
       __builtin_prefetch(bgr.ptr<std::uint8_t>(ahead.y) + 3 * ahead.x);
       __builtin_prefetch(bgr.ptr<std::uint8_t>(std::min(ahead.y + 1, h - 1)) + 3 * ahead.x);
