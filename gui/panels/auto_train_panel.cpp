@@ -64,7 +64,7 @@ void draw_auto_train(studio::StudioController& controller) {
   ImGui::SameLine();
   if (ImGui::Button("Propose labels")) controller.propose();
   ImGui::SameLine();
-  ImGui::TextDisabled("(P; Enter accepts an image's)");
+  ImGui::TextDisabled("(P)");
   if (controller.auto_train() && controller.auto_train_busy()) {
     ImGui::TextUnformatted("retraining...");
   } else if (!controller.auto_train_summary().empty()) {
@@ -73,7 +73,9 @@ void draw_auto_train(studio::StudioController& controller) {
   if (!controller.proposal_summary().empty()) ImGui::TextWrapped("%s", controller.proposal_summary().c_str());
   const auto& curve = controller.learning_curve();
   if (curve.empty()) {
-    ImGui::TextDisabled("learning curve: appears once you label with auto-train on");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("learning curve (test F1 over labels): appears once you label with auto-train on");
+    ImGui::PopStyleColor();
     return;
   }
   const studio::CurvePoint& last = curve.back();
@@ -82,8 +84,8 @@ void draw_auto_train(studio::StudioController& controller) {
     if (last.test_segments > 0 && !c.empty()) std::snprintf(s, sizeof s, "%.3f", c.f1());
     return std::string(s);
   };
-  ImGui::Text("test F1 after %zu labels: marking %s, boundary %s", last.labelled, f1(last.test.marking).c_str(),
-              f1(last.test.boundary).c_str());
+  ImGui::TextWrapped("test F1 after %zu labels: marking %s, boundary %s", last.labelled,
+                     f1(last.test.marking).c_str(), f1(last.test.boundary).c_str());
   draw_curve(curve);
 }
 
