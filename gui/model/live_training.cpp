@@ -37,7 +37,7 @@ void StudioController::adopt_auto_train(const AutoTrainResult& r) {
   if (has_proposals) refresh_proposals(r.made.thresholds);
   curve_.push_back({r.train_segments + r.test_segments, r.test_segments, r.test_counts});
   char line[160];
-  std::snprintf(line, sizeof line, "retrained on %zu labels in %.0f ms (marking %s, boundary %s)", r.train_segments,
+  std::snprintf(line, sizeof line, "retrained on %zu train-split labels in %.0f ms (marking %s, boundary %s)", r.train_segments,
                 r.elapsed_ms, std::string(to_string(r.made.marking)).c_str(),
                 std::string(to_string(r.made.boundary)).c_str());
   auto_train_summary_ = line;

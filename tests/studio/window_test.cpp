@@ -290,7 +290,15 @@ TEST_F(StudioWindow, PanelScreenshotsOnTheDemoProject) {
       ASSERT_TRUE(wait_for([&] { return state()["hovered"] == -1; }, 10s));
     }
     if (i == 3) {
-      // Train: start a run with Ctrl+T and capture once it has finished.
+      // Train: review three images first (P, Enter x3) so auto-train draws its learning curve,
+      // then start a PSO run with Ctrl+T and capture once it has finished.
+      ASSERT_EQ(run(x("key p")), 0);
+      for (int enter = 0; enter < 3; ++enter) {
+        const auto before = state()["to_review"];
+        ASSERT_EQ(run(x("key Return")), 0);
+        ASSERT_TRUE(wait_for([&] { return state()["to_review"] != before || enter == 0; }, 10s));
+      }
+      ASSERT_TRUE(wait_for([&] { return state()["auto_training"] == false; }, 30s));
       ASSERT_EQ(run(x("key ctrl+t")), 0);
       ASSERT_TRUE(wait_for([&] { return state()["trained"] == true; }, 120s));
     } else {
@@ -302,15 +310,18 @@ TEST_F(StudioWindow, PanelScreenshotsOnTheDemoProject) {
     const cv::Mat image = cv::imread(shot.string());
     ASSERT_EQ(image.cols, kWidth);
     if (i == 3) {
-      // The best-score curve is drawn (ImGui's grey plot line under the progress bar).
-      int curve = 0;
-      for (int y = 190; y < 310; ++y) {
+      // The best-score curve is drawn (ImGui's grey plot line under the progress bar), and the
+      // learning curve above it in the class colours (marking magenta).
+      int curve = 0, learning = 0;
+      for (int y = 30; y < 700; ++y) {
         for (int px = 880; px < 1270; ++px) {
-          const cv::Vec3b p = image.at<cv::Vec3b>(y, px);
-          curve += std::abs(p[0] - 156) < 30 && std::abs(p[1] - 156) < 30 && std::abs(p[2] - 156) < 30;
+          const cv::Vec3b p = image.at<cv::Vec3b>(y, px);  // BGR
+          curve += y > 150 && std::abs(p[0] - 156) < 30 && std::abs(p[1] - 156) < 30 && std::abs(p[2] - 156) < 30;
+          learning += std::abs(p[2] - 255) < 40 && std::abs(p[1] - 40) < 40 && std::abs(p[0] - 200) < 40;
         }
       }
       EXPECT_GT(curve, 100) << "no best-score curve in the Train panel";
+      EXPECT_GT(learning, 20) << "no learning curve in the Train panel";
     }
     std::string name = panels[i];
     name[0] = static_cast<char>(std::tolower(name[0]));
