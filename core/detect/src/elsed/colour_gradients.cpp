@@ -116,8 +116,10 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
       const std::uint8_t* row = bgr.ptr<std::uint8_t>(px.y - 1 + r) + 3 * (px.x - 1);
       if (int_sums) {
 #if CV_SIMD128
-        sum_lo[r] = sum_lo[r] + cv::v_load_expand_q(row);
-        sum_hi[r] = sum_hi[r] + cv::v_load_expand_q(row + 4);
+        cv::v_uint32x4 lo, hi;
+        cv::v_expand(cv::v_load_expand(row), lo, hi);  // 8 bytes, unaligned: one 64-bit load
+        sum_lo[r] = sum_lo[r] + lo;
+        sum_hi[r] = sum_hi[r] + hi;
         int_window[r * 9 + 8] += row[8];
 #else
         std::uint32_t* dst = &int_window[r * 9];
