@@ -102,6 +102,29 @@ AVX2_FN int grey_row(const std::uint8_t* bgr, int w, std::uint8_t* out) {
   const __m128i r1 = _mm_setr_epi8(-1, -1, -1, -1, -1, 1, 4, 7, 10, 13, -1, -1, -1, -1, -1, -1);
   const __m128i r2 = _mm_setr_epi8(-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, 3, 6, 9, 12, 15);
   int x = 0;
+  // 32 pixels at a time: each 128-bit lane holds 16 pixels' 48 bytes, so the same in-lane
+  // shuffles serve both halves; the lane-wise widening and packing keep the pixels in order.
+  const __m256i B0 = _mm256_broadcastsi128_si256(b0), B1 = _mm256_broadcastsi128_si256(b1),
+                B2 = _mm256_broadcastsi128_si256(b2), G0 = _mm256_broadcastsi128_si256(g0),
+                G1 = _mm256_broadcastsi128_si256(g1), G2 = _mm256_broadcastsi128_si256(g2),
+                R0 = _mm256_broadcastsi128_si256(r0), R1 = _mm256_broadcastsi128_si256(r1),
+                R2 = _mm256_broadcastsi128_si256(r2);
+  const __m256i zero = _mm256_setzero_si256();
+  for (; x + 32 <= w; x += 32) {
+    const std::uint8_t* p = bgr + 3 * x;
+    const __m256i a0 = _mm256_loadu2_m128i(reinterpret_cast<const __m128i*>(p + 48), reinterpret_cast<const __m128i*>(p));
+    const __m256i a1 = _mm256_loadu2_m128i(reinterpret_cast<const __m128i*>(p + 64), reinterpret_cast<const __m128i*>(p + 16));
+    const __m256i a2 = _mm256_loadu2_m128i(reinterpret_cast<const __m128i*>(p + 80), reinterpret_cast<const __m128i*>(p + 32));
+    const __m256i b = _mm256_or_si256(_mm256_or_si256(_mm256_shuffle_epi8(a0, B0), _mm256_shuffle_epi8(a1, B1)),
+                                      _mm256_shuffle_epi8(a2, B2));
+    const __m256i g = _mm256_or_si256(_mm256_or_si256(_mm256_shuffle_epi8(a0, G0), _mm256_shuffle_epi8(a1, G1)),
+                                      _mm256_shuffle_epi8(a2, G2));
+    const __m256i r = _mm256_or_si256(_mm256_or_si256(_mm256_shuffle_epi8(a0, R0), _mm256_shuffle_epi8(a1, R1)),
+                                      _mm256_shuffle_epi8(a2, R2));
+    const __m256i lo = grey16(_mm256_unpacklo_epi8(b, zero), _mm256_unpacklo_epi8(g, zero), _mm256_unpacklo_epi8(r, zero));
+    const __m256i hi = grey16(_mm256_unpackhi_epi8(b, zero), _mm256_unpackhi_epi8(g, zero), _mm256_unpackhi_epi8(r, zero));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + x), _mm256_packus_epi16(lo, hi));
+  }
   for (; x + 16 <= w; x += 16) {
     const __m128i* p = reinterpret_cast<const __m128i*>(bgr + 3 * x);
     const __m128i a0 = _mm_loadu_si128(p), a1 = _mm_loadu_si128(p + 1), a2 = _mm_loadu_si128(p + 2);
