@@ -75,4 +75,18 @@ TEST_F(CliBench, BadImagesAreSkippedAndReported) {
   const CliRun usage = run_cli({"bench", "--repeat", "zero", good.string()}, dir_);
   EXPECT_EQ(usage.exit_code, 2);
   EXPECT_NE(usage.err.find("--repeat"), std::string::npos) << usage.err;
+  const CliRun target = run_cli({"bench", "--floor-target", "nan", good.string()}, dir_);
+  EXPECT_EQ(target.exit_code, 2);
+  EXPECT_NE(target.err.find("--floor-target"), std::string::npos) << target.err;
+}
+
+TEST_F(CliBench, ChecksTheFloorTargetItIsGiven) {
+  const fs::path a = write_image("a.png", synthetic_field(320, 240));
+  // No detector is 100x the floor, none is a tenth of it: the check must say met, then NOT met.
+  const CliRun loose = run_cli({"bench", "--repeat", "1", "--quiet", "--floor-target", "100", a.string()}, dir_);
+  ASSERT_EQ(loose.exit_code, 0) << loose.err;
+  EXPECT_NE(loose.out.find("(<= 100.00: met)"), std::string::npos) << loose.out;
+  const CliRun tight = run_cli({"bench", "--repeat", "1", "--quiet", "--floor-target", "0.1", a.string()}, dir_);
+  ASSERT_EQ(tight.exit_code, 0) << tight.err;
+  EXPECT_NE(tight.out.find("(<= 0.10: NOT met)"), std::string::npos) << tight.out;
 }
