@@ -9,7 +9,10 @@ namespace fieldlines::gui {
 namespace {
 void counts_table(const char* id, const Counts& train, const Counts& test) {
   if (!ImGui::BeginTable(id, 5, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) return;
-  for (const char* h : {"class / split", "precision", "recall", "F1", "TP/FP/FN"}) ImGui::TableSetupColumn(h);
+  // The first column fits its longest name; the figures share what is left.
+  ImGui::TableSetupColumn("class / split", ImGuiTableColumnFlags_WidthFixed,
+                          ImGui::CalcTextSize("boundary train").x + ImGui::GetStyle().CellPadding.x * 2);
+  for (const char* h : {"precision", "recall", "F1", "TP/FP/FN"}) ImGui::TableSetupColumn(h);
   ImGui::TableHeadersRow();
   const auto row = [](const char* name, const ClassCounts& c) {
     ImGui::TableNextRow();
