@@ -138,8 +138,9 @@ long allocations_in_detect(LineDetector& detector, const cv::Mat& image, std::ve
 
 // Two warm-up passes, then every frame once more, counted; with the per-frame counts so a
 // failure names the frame.
-void expect_warm_detect_allocates_nothing(const std::vector<cv::Mat>& frames, const std::vector<std::string>& names) {
-  LineDetector detector;
+void expect_warm_detect_allocates_nothing(const std::vector<cv::Mat>& frames, const std::vector<std::string>& names,
+                                         const DetectorParams& params = {}) {
+  LineDetector detector(params);
   std::vector<Segment> out;
   // A cold detector does allocate, inside libfieldlines_detect: the counter sees the library.
   EXPECT_GT(allocations_in_detect(detector, frames.front(), out), 0);
@@ -208,8 +209,24 @@ TEST(DetectAllocations, NoneOnSyntheticFramesOfOneSize) {
   expect_warm_detect_allocates_nothing(frames, names);
 }
 
-TEST(DetectAllocations, NoneWhenSizesAlternateAfterTheLargest) {
-  LineDetector detector;
+// With threads > 1 the workers start on the first detect and are woken per frame without a heap
+// call; the counter sees every thread's allocations.
+TEST(DetectAllocations, NoneWithTwoThreadsOnFramesOfOneSize) {
+  std::vector<cv::Mat> frames;
+  std::vector<std::string> names;
+  for (const cv::Size s : {cv::Size(640, 480), cv::Size(1280, 720), cv::Size(1920, 1080)}) {
+    for (int shift = 0; shift < 3; ++shift) {
+      frames.push_back(test::synthetic_field(s.width, s.height, shift * 7));
+      names.push_back(cv::format("synthetic %dx%d shift %d", s.width, s.height, shift * 7));
+    }
+  }
+  DetectorParams two;
+  two.threads = 2;
+  expect_warm_detect_allocates_nothing(frames, names, two);
+}
+
+void expect_none_when_sizes_alternate(const DetectorParams& params) {
+  LineDetector detector(params);
   std::vector<Segment> out;
   const cv::Mat large = test::synthetic_field(1280, 720), small = test::synthetic_field(320, 240, 5),
                 middle = test::synthetic_field(800, 600, 3), tall = test::synthetic_field(480, 640, 9);
@@ -217,9 +234,17 @@ TEST(DetectAllocations, NoneWhenSizesAlternateAfterTheLargest) {
   detector.detect(large, out);  // drawing buffers grow to whichever frame needs most
   for (int round = 0; round < 3; ++round)
     for (const cv::Mat* f : {&small, &large, &tall, &middle, &small}) {
-      EXPECT_EQ(allocations_in_detect(detector, *f, out), 0) << f->cols << "x" << f->rows << " round " << round;
+      EXPECT_EQ(allocations_in_detect(detector, *f, out), 0)
+          << f->cols << "x" << f->rows << " round " << round << ", threads " << params.threads;
       EXPECT_FALSE(out.empty());
     }
+}
+
+TEST(DetectAllocations, NoneWhenSizesAlternateAfterTheLargest) {
+  expect_none_when_sizes_alternate({});
+  DetectorParams two;  // 320x240 splits into two bands, so does every other size
+  two.threads = 2;
+  expect_none_when_sizes_alternate(two);
 }
 
 std::vector<fs::path> images_in(const fs::path& dir) {
@@ -229,7 +254,7 @@ std::vector<fs::path> images_in(const fs::path& dir) {
   return paths;
 }
 
-void expect_none_on_folder(const fs::path& dir, std::size_t expected_frames) {
+void expect_none_on_folder(const fs::path& dir, std::size_t expected_frames, const DetectorParams& params = {}) {
   std::vector<cv::Mat> frames;
   std::vector<std::string> names;
   for (const fs::path& p : images_in(dir)) {
@@ -239,12 +264,15 @@ void expect_none_on_folder(const fs::path& dir, std::size_t expected_frames) {
     names.push_back(p.filename().string());
   }
   ASSERT_EQ(frames.size(), expected_frames) << dir;
-  expect_warm_detect_allocates_nothing(frames, names);
+  expect_warm_detect_allocates_nothing(frames, names, params);
 }
 
 TEST(DetectAllocations, NoneOnTheAuthorsSslFrames) {
   FIELDLINES_REQUIRE_SHARED("data/elsed-ssl/images", dir);
   expect_none_on_folder(dir, 41);
+  DetectorParams two;
+  two.threads = 2;
+  expect_none_on_folder(dir, 41, two);
 }
 
 TEST(DetectAllocations, NoneOnHumanoidFramesOfTwoSizes) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "cli_test_support.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
 
@@ -156,6 +157,79 @@ TEST(Detector, ValidatesParameters) {
   p = {};
   p.validation_threshold = std::nan("");
   EXPECT_THROW(LineDetector{p}, Error);
+  for (const int threads : {0, -1, 65}) {
+    p = {};
+    p.threads = threads;
+    try {
+      LineDetector{p};
+      FAIL() << "threads = " << threads << " accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("threads must be in [1, 64]"), std::string::npos) << e.what();
+    }
+  }
+  p = {};
+  p.threads = 64;
+  EXPECT_NO_THROW(LineDetector{p});
+}
+
+void expect_same_segments(const std::vector<Segment>& got, const std::vector<Segment>& expected,
+                          const std::string& what) {
+  ASSERT_EQ(got.size(), expected.size()) << what;
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const Segment &a = got[i], &b = expected[i];
+    EXPECT_TRUE(a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1) << what << ", segment " << i;
+    EXPECT_EQ(a.saliency, b.saliency) << what << ", segment " << i;
+    EXPECT_EQ(a.grad_x, b.grad_x) << what << ", segment " << i;
+    EXPECT_EQ(a.grad_y, b.grad_y) << what << ", segment " << i;
+    EXPECT_EQ(a.label, b.label) << what << ", segment " << i;
+  }
+}
+
+// Row bands on several threads give the segments one thread gives, bit for bit: odd heights,
+// bands just above the minimum, frames too short to split, sizes changing in between, and the
+// original ELSED's denser scan (more anchors near band edges).
+TEST(Detector, ThreadsGiveTheSegmentsOfOneThread) {
+  const std::vector<cv::Size> sizes{{5, 5},     {40, 31},   {64, 63},   {100, 64},  {101, 65},  {160, 97},
+                                    {321, 241}, {640, 480}, {641, 479}, {1280, 720}, {1921, 1081}, {33, 400}};
+  for (const int kernel : {7, 5, 31}) {
+    DetectorParams one;
+    one.gaussian_kernel = kernel;
+    if (kernel == 5) one.scan_interval = 2, one.min_line_length = 15;
+    DetectorParams two = one, three = one;
+    two.threads = 2;
+    three.threads = 3;
+    LineDetector d1(one), d2(two), d3(three);
+    int shift = 0;
+    std::size_t segments = 0;
+    for (const cv::Size& s : sizes) {
+      cv::Mat img = test::synthetic_field(s.width, s.height, shift += 3);
+      cv::Mat noise(img.size(), img.type());
+      cv::randn(noise, 0, 6);  // many weak edges, some right at band boundaries
+      img += noise;
+      const std::string what = cv::format("k=%d %dx%d", kernel, s.width, s.height);
+      const auto expected = d1.detect(img);
+      segments += expected.size();
+      expect_same_segments(d2.detect(img), expected, what + " 2 threads");
+      expect_same_segments(d3.detect(img), expected, what + " 3 threads");
+    }
+    EXPECT_GT(segments, 20u) << "k=" << kernel;
+  }
+}
+
+// A moved detector keeps its threads working; destroying one with started threads joins them.
+TEST(Detector, ThreadedDetectorMovesAndDestroysCleanly) {
+  DetectorParams p;
+  p.threads = 2;
+  const cv::Mat img = test::synthetic_field(640, 480);
+  const auto expected = LineDetector().detect(img);
+  LineDetector first(p);
+  expect_same_segments(first.detect(img), expected, "first");
+  LineDetector moved(std::move(first));
+  expect_same_segments(moved.detect(img), expected, "moved");
+  for (int i = 0; i < 20; ++i) {
+    LineDetector shortlived(p);
+    expect_same_segments(shortlived.detect(img), expected, "short-lived");
+  }
 }
 
 TEST(Detector, WithoutValidationSaliencyIsTheLength) {

@@ -24,6 +24,7 @@ void validate(const DetectorParams& p) {
   require(p.px_to_segment_dist > 0 && p.px_to_segment_dist <= 100, "px_to_segment_dist must be in (0, 100]");
   require(p.validation_threshold > 0 && p.validation_threshold <= 1.5708,
           "validation_threshold must be in (0, pi/2] radians");
+  require(p.threads >= 1 && p.threads <= 64, "threads must be in [1, 64]");
   for (const int s : p.junction_sizes)
     require(s >= 1 && s <= 100, "junction_sizes must each be in [1, 100]");
 }

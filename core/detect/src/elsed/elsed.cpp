@@ -11,14 +11,28 @@ using elsed::mark_of;
 using elsed::Pixel;
 
 void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& params) {
-  if (params.gaussian_kernel != pass_kernel_ || params.gaussian_sigma != pass_sigma_ ||
+  const auto threads = static_cast<std::size_t>(params.threads);
+  if (passes_.size() != threads || params.gaussian_kernel != pass_kernel_ || params.gaussian_sigma != pass_sigma_ ||
       params.gradient_threshold != pass_threshold_) {
-    pass_.configure(params.gaussian_kernel, params.gaussian_sigma, params.gradient_threshold);
+    passes_.resize(threads);
+    for (elsed::GradientPass& p : passes_)
+      p.configure(params.gaussian_kernel, params.gaussian_sigma, params.gradient_threshold);
     pass_kernel_ = params.gaussian_kernel;
     pass_sigma_ = params.gaussian_sigma;
     pass_threshold_ = params.gradient_threshold;
+    if (threads == 1) workers_.resize(0);
   }
-  pass_.run(bgr, maps_);
+  const int h = bgr.rows, bands = passes_.front().band_count(h, params.threads);
+  if (bands == 1) {
+    passes_.front().run(bgr, maps_);
+    return;
+  }
+  workers_.resize(params.threads - 1);  // once; later frames reuse the threads
+  elsed::GradientPass::size_maps(bgr, maps_);
+  auto band = [&](int i) {
+    passes_[static_cast<std::size_t>(i)].run_rows(bgr, maps_, h * i / bands, h * (i + 1) / bands);
+  };
+  workers_.run(bands, band);
 }
 
 void ElsedEngine::find_anchors(int scan_interval, int threshold) {

@@ -5,6 +5,7 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include "band_workers.hpp"
 #include "edge_drawer.hpp"
 #include "elsed_types.hpp"
 #include "gradient_pass.hpp"
@@ -25,8 +26,11 @@ class ElsedEngine {
  private:
   void find_anchors(int scan_interval, int threshold);
 
-  elsed::GradientPass pass_;
-  int pass_kernel_ = -1, pass_threshold_ = -1;  // what pass_ is configured for
+  // One pass per thread (each its own scratch rows), all configured alike; passes_[0] runs on
+  // the calling thread.
+  std::vector<elsed::GradientPass> passes_;
+  elsed::BandWorkers workers_;  // started when a frame first splits into bands
+  int pass_kernel_ = -1, pass_threshold_ = -1;  // what passes_ are configured for
   double pass_sigma_ = -1;
   elsed::DrawerParams drawer_params_;  // a member so its junction_sizes keeps its capacity
   elsed::GradientMaps maps_;

@@ -236,7 +236,7 @@ void GradientPass::configure(int gaussian_kernel, double gaussian_sigma, int gra
 
 }
 
-void GradientPass::run(const cv::Mat& bgr, GradientMaps& maps) {
+void GradientPass::size_maps(const cv::Mat& bgr, GradientMaps& maps) {
   const std::size_t n = static_cast<std::size_t>(bgr.cols) * static_cast<std::size_t>(bgr.rows);
   maps.width = bgr.cols;
   maps.height = bgr.rows;
@@ -244,7 +244,16 @@ void GradientPass::run(const cv::Mat& bgr, GradientMaps& maps) {
   maps.dy.resize(n);
   maps.mag.resize(n);
   maps.state.resize(n);
+}
+
+void GradientPass::run(const cv::Mat& bgr, GradientMaps& maps) {
+  size_maps(bgr, maps);
   run_rows(bgr, maps, 0, bgr.rows);
+}
+
+int GradientPass::band_count(int rows, int threads) const {
+  const int min_rows = std::max(kMinBandRows, 2 * (2 * radius_ + 1));
+  return std::clamp(rows / min_rows, 1, std::max(threads, 1));
 }
 
 void GradientPass::run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begin, int row_end) {

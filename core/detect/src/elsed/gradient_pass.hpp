@@ -29,7 +29,17 @@ class GradientPass {
   // bgr: 8-bit, 3 channels, at least 1x1. Fills `maps` (resized by capacity), rows
   // [row_begin, row_end) only; the whole image by default.
   void run(const cv::Mat& bgr, GradientMaps& maps);
+  // Rows [row_begin, row_end) of `maps`, already sized for bgr (size_maps): the same bits as the
+  // whole-image pass, since the band reads the rows above and below it that its ring needs and
+  // borders only the image's first and last rows. Passes on separate threads may fill disjoint
+  // bands of one `maps` at once (each pass has its own scratch).
   void run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begin, int row_end);
+  static void size_maps(const cv::Mat& bgr, GradientMaps& maps);
+  // Row bands worth running for `rows` rows on `threads` threads: each band recomputes 2r + 2
+  // smoothed rows its neighbour also computes, so no band is thinner than kMinBandRows or twice
+  // the kernel; 1 means the whole image in one pass.
+  int band_count(int rows, int threads) const;
+  static constexpr int kMinBandRows = 32;
 
  private:
   bool use_avx2_ = false;  // the CPU has AVX2: gradient_rows_avx2's kernels instead of SSE2/NEON

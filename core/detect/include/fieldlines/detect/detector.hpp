@@ -30,6 +30,10 @@ struct DetectorParams {
   bool validate = true;              // false: keep every drawn segment, saliency = length
   bool treat_junctions = true;       // jump over discontinuities along the line
   std::vector<int> junction_sizes{5, 7, 9};
+  // Threads for the gradient pass, which then runs in row bands (frames too short for bands of
+  // a useful height keep one). Speed only: the results are the same bits for any count, so it
+  // is not written into thresholds or project files. Workers start on the first detect.
+  int threads = 1;
   bool operator==(const DetectorParams&) const = default;
 };
 
