@@ -27,7 +27,8 @@ class CliBench : public fieldlines::test::TempDirTest {};
 TEST_F(CliBench, HelpNamesTheDetectorsAndExamples) {
   const CliRun r = run_cli({"bench", "--help"}, dir_);
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* word : {"edlines", "fld", "lsd", "gradients", "floor", "--repeat", "--json", "examples:"})
+  for (const char* word : {"edlines", "fld", "lsd", "gradients", "floor", "--repeat", "--json", "--scale", "--detector-threads",
+                           "examples:"})
     EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
@@ -89,4 +90,48 @@ TEST_F(CliBench, ChecksTheFloorTargetItIsGiven) {
   const CliRun tight = run_cli({"bench", "--repeat", "1", "--quiet", "--floor-target", "0.1", a.string()}, dir_);
   ASSERT_EQ(tight.exit_code, 0) << tight.err;
   EXPECT_NE(tight.out.find("(<= 0.10: NOT met)"), std::string::npos) << tight.out;
+}
+
+TEST_F(CliBench, ScalesEveryImageAndSaysSo) {
+  // Two sizes in, one size timed: the table and the JSON name the scaled size.
+  const fs::path a = write_image("a.png", synthetic_field(320, 240));
+  const fs::path b = write_image("b.png", synthetic_field(640, 480, 5));
+  const fs::path out = dir_ / "bench.json";
+  const CliRun r = run_cli({"bench", "--repeat", "1", "--quiet", "--scale", "400x300", "--json", out.string(),
+                            a.string(), b.string()},
+                           dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("2 images scaled to 400x300 x 1 pass, single thread"), std::string::npos) << r.out;
+  const json j = json::parse(read_text(out));
+  EXPECT_EQ(j.at("scale").at("width"), 400);
+  EXPECT_EQ(j.at("scale").at("height"), 300);
+  EXPECT_EQ(j.at("detector_threads"), 1);
+  for (const auto& d : j.at("detectors")) {
+    if (d["name"] == "fieldlines") {
+      EXPECT_GT(d.at("segments_per_image").get<double>(), 0) << d;
+    }
+  }
+
+  for (const char* bad : {"640", "640x", "x480", "0x480", "640x7", "8193x100", "640x480x2", "axb", "-640x480"}) {
+    const CliRun usage = run_cli({"bench", "--quiet", "--scale", bad, a.string()}, dir_);
+    EXPECT_EQ(usage.exit_code, 2) << bad;
+    EXPECT_NE(usage.err.find("--scale: expected WxH"), std::string::npos) << bad << ": " << usage.err;
+  }
+}
+
+TEST_F(CliBench, DetectorThreadsReachOurRows) {
+  const fs::path a = write_image("a.png", synthetic_field(640, 480));
+  const fs::path out = dir_ / "bench.json";
+  const CliRun r = run_cli({"bench", "--repeat", "1", "--quiet", "--detector-threads", "2", "--json", out.string(),
+                            a.string()},
+                           dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("fieldlines and gradients: 2 detector threads"), std::string::npos) << r.out;
+  EXPECT_EQ(json::parse(read_text(out)).at("detector_threads"), 2);
+  EXPECT_FALSE(json::parse(read_text(out)).contains("scale"));
+  for (const char* bad : {"0", "65", "two"}) {
+    const CliRun usage = run_cli({"bench", "--quiet", "--detector-threads", bad, a.string()}, dir_);
+    EXPECT_EQ(usage.exit_code, 2) << bad;
+    EXPECT_NE(usage.err.find("--detector-threads"), std::string::npos) << bad << ": " << usage.err;
+  }
 }

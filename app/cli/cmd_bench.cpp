@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 #include <opencv2/core/utility.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "app/cli/args.hpp"
 #include "app/cli/commands.hpp"
@@ -26,7 +27,8 @@ namespace fs = std::filesystem;
 
 constexpr const char* kHelp = R"(usage: fieldlines bench [options] PATH...
 
-Times, in this process, on the same colour images and on one thread (cv::setNumThreads(1)):
+Times, in this process, on the same colour images and on one thread (cv::setNumThreads(1);
+our rows may take more with --detector-threads):
   fieldlines  our LineDetector: ELSED + colour gradients + classification
   edlines     OpenCV ximgproc EdgeDrawing in EDLines mode (detectEdges + detectLines)
   fld         OpenCV ximgproc FastLineDetector
@@ -44,13 +46,21 @@ options:
   --repeat N    timed passes over all images (default 5); one untimed warm-up pass first
   --floor-target X  the ours/floor ratio to check (default 1.5, the SSL target; the Humanoid
                 frames, larger and busier, have 2)
-  --json OUT    write {"images":N,"detectors":[{"name","median_ms","p90_ms","segments_per_image"}]}
+  --scale WxH   resize every loaded image to W x H pixels (cv::resize, INTER_LINEAR; stretched
+                if the aspect ratio differs) before timing, e.g. 1280x720 or 1920x1080;
+                W and H in [8, 8192]
+  --detector-threads N  DetectorParams::threads for the fieldlines and gradients rows (default
+                1, in [1, 64]): the gradient pass runs in N row bands at once; the peers and the
+                floor stay on one thread
+  --json OUT    write {"images":N,"scale":{"width","height"} (with --scale),"detector_threads":N,
+                "detectors":[{"name","median_ms","p90_ms","segments_per_image"}]}
   --quiet       no progress on stderr
   -h, --help    this help
 
 examples:
   fieldlines bench ../shared/data/elsed-ssl/images
   fieldlines bench --repeat 20 --json bench.json frame.png
+  fieldlines bench --quiet --repeat 10 --scale 1920x1080 --detector-threads 2 ../shared/data/elsed-ssl/images
 )";
 
 // Linear interpolation between closest ranks (the usual "type 7" quantile).
@@ -70,10 +80,26 @@ struct Timing {
   double p90() const { return quantile(ms, 0.9); }
 };
 
+// "WxH", both sides in [8, 8192] (FLD and LSD need a few pixels; 8192 keeps a frame's maps
+// far below any int overflow).
+cv::Size parse_scale(const std::string& text) {
+  const auto bad = [&] {
+    return Error("--scale: expected WxH with W and H whole numbers in [8, 8192] (e.g. 1280x720), got '" + text + "'");
+  };
+  const std::size_t x = text.find('x');
+  if (x == std::string::npos) throw bad();
+  try {
+    return {parse_int(std::string_view(text).substr(0, x), "--scale", 8, 8192),
+            parse_int(std::string_view(text).substr(x + 1), "--scale", 8, 8192)};
+  } catch (const Error&) {
+    throw bad();
+  }
+}
+
 }  // namespace
 
 int cmd_bench(const Args& args) {
-  const ParsedArgs a(args, {"--json", "--repeat", "--floor-target"}, {"--quiet", "--help", "-h"});
+  const ParsedArgs a(args, {"--json", "--repeat", "--floor-target", "--scale", "--detector-threads"}, {"--quiet", "--help", "-h"});
   if (a.flag("--help") || a.flag("-h")) {
     std::fputs(kHelp, stdout);
     return 0;
@@ -81,6 +107,10 @@ int cmd_bench(const Args& args) {
   if (a.positionals().empty()) throw Error("no PATH given: name at least one image or folder (see --help)");
   const int repeat = a.int_or("--repeat", 5, 1, 100000);
   const double floor_target = a.double_or("--floor-target", 1.5, 0.1, 100);
+  const std::optional<cv::Size> scale =
+      a.has("--scale") ? std::optional<cv::Size>(parse_scale(*a.value("--scale"))) : std::nullopt;
+  DetectorParams params;
+  params.threads = a.int_or("--detector-threads", 1, 1, 64);
   const std::optional<fs::path> json_out = a.has("--json") ? std::optional<fs::path>(*a.value("--json")) : std::nullopt;
   if (json_out) check_output_path("--json", *json_out);
 
@@ -90,7 +120,9 @@ int cmd_bench(const Args& args) {
   for (const auto& path : inputs.images) {
     try {
       // Every detector gets the same 8-bit BGR frame, as a robot's camera delivers it.
-      images.push_back(to_bgr8(load_image(path)).clone());
+      cv::Mat bgr = to_bgr8(load_image(path)).clone();
+      if (scale) cv::resize(bgr, bgr, *scale, 0, 0, cv::INTER_LINEAR);
+      images.push_back(std::move(bgr));
     } catch (const std::exception& e) {
       failed.push_back({path, e.what()});
     }
@@ -101,7 +133,7 @@ int cmd_bench(const Args& args) {
   // Single thread for everyone: OpenCV would otherwise parallelise some peers and not others.
   const int previous_threads = cv::getNumThreads();
   cv::setNumThreads(1);
-  auto detectors = make_timed_detectors();
+  auto detectors = make_timed_detectors(params);
   std::vector<Timing> timings;
   for (const auto& d : detectors) timings.push_back({d.name, {}, 0});
 
@@ -130,8 +162,12 @@ int cmd_bench(const Args& args) {
   auto find = [&](const std::string& name) {
     return std::find_if(timings.begin(), timings.end(), [&](const Timing& t) { return t.name == name; })->median();
   };
-  std::printf("%zu image%s x %d pass%s, single thread, median over all timed calls\n\n", images.size(),
-              images.size() == 1 ? "" : "s", repeat, repeat == 1 ? "" : "es");
+  const std::string size_note = scale ? cv::format(" scaled to %dx%d", scale->width, scale->height) : "";
+  const std::string thread_note =
+      params.threads == 1 ? "single thread"
+                          : cv::format("single thread (fieldlines and gradients: %d detector threads)", params.threads);
+  std::printf("%zu image%s%s x %d pass%s, %s, median over all timed calls\n\n", images.size(),
+              images.size() == 1 ? "" : "s", size_note.c_str(), repeat, repeat == 1 ? "" : "es", thread_note.c_str());
   std::printf("%-11s %10s %10s %14s %12s\n", "detector", "median ms", "p90 ms", "segments/img", "ours/this");
   nlohmann::ordered_json detectors_json = nlohmann::ordered_json::array();
   for (const auto& t : timings) {
@@ -150,7 +186,10 @@ int cmd_bench(const Args& args) {
               find("gradients") / find("floor"));
 
   if (json_out) {
-    const nlohmann::ordered_json j{{"images", images.size()}, {"detectors", detectors_json}};
+    nlohmann::ordered_json j{{"images", images.size()}};
+    if (scale) j["scale"] = {{"width", scale->width}, {"height", scale->height}};
+    j["detector_threads"] = params.threads;
+    j["detectors"] = detectors_json;
     write_output_file(*json_out, j.dump(2) + "\n");
     std::printf("results written to %s\n", json_out->string().c_str());
   }
