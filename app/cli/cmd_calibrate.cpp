@@ -75,13 +75,13 @@ void add_video(Inputs& in, LineDetector& detector, const fs::path& path, int eve
   const std::size_t expected = count > 0 ? static_cast<std::size_t>(count) / every + 1 : 0;
   Progress progress("calibrate " + path.filename().string(), expected, stderr,
                     {quiet ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
-  cv::Mat frame;
-  for (long index = 0; capture.grab(); ++index) {
-    if (index % every != 0) continue;
-    if (!capture.retrieve(frame) || frame.empty()) break;
-    add_detected(in, detector, frame);
-    progress.advance();
-  }
+  for_each_nth_frame(capture, every, [&](long, const cv::Mat& frame) {
+    if (!frame.empty()) {
+      add_detected(in, detector, frame);
+      progress.advance();
+    }
+    return true;
+  });
 }
 
 // A project or reference CSV already holds segments: their features, never their labels.

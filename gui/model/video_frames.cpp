@@ -33,10 +33,8 @@ void VideoFramesJob::start(const std::filesystem::path& video, const std::filesy
     if (ec) throw Error(folder.string() + ": cannot create the frames folder (" + ec.message() + ")");
     const double total = capture.get(cv::CAP_PROP_FRAME_COUNT);
     VideoFramesProgress progress;
-    cv::Mat frame;
-    for (long index = 0; !stop.stop_requested() && capture.read(frame); ++index) {
-      const bool keep = index % params.every == 0;
-      if (keep) {
+    for_each_nth_frame(capture, params.every, [&](long index, const cv::Mat& frame) {
+      if (!frame.empty()) {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%06ld.png", index);
         const auto path = folder / name;
@@ -45,11 +43,12 @@ void VideoFramesJob::start(const std::filesystem::path& video, const std::filesy
       }
       const float fraction = total > 0 ? static_cast<float>(std::min(1.0, static_cast<double>(index + 1) / total)) : 0;
       // A message per written frame or per percent, not per decoded frame.
-      if (keep || fraction - progress.fraction >= 0.01f) {
+      if (!frame.empty() || fraction - progress.fraction >= 0.01f) {
         progress.fraction = fraction;
         report(progress);
       }
-    }
+      return !stop.stop_requested();
+    });
     if (progress.written == 0 && !stop.stop_requested()) throw Error(video.string() + ": no frame could be decoded");
     if (!stop.stop_requested()) progress.fraction = 1;
     report(progress);

@@ -35,4 +35,19 @@ inline bool open_video_file(cv::VideoCapture& capture, const std::string& path) 
   return opened;
 }
 
+// Walks an open video: grabs every frame (cheap) and decodes only every `every`-th, the one
+// rule the studio's video import and `fieldlines calibrate` share. Calls on_frame(index, frame)
+// for every grabbed frame, with `frame` empty for the skipped ones (so a caller can report
+// progress), until on_frame returns false, the video ends or a kept frame cannot be decoded.
+template <typename OnFrame>
+void for_each_nth_frame(cv::VideoCapture& capture, int every, OnFrame&& on_frame) {
+  cv::Mat frame;
+  cv::Mat skipped;  // stays empty
+  for (long index = 0; capture.grab(); ++index) {
+    const bool keep = index % every == 0;
+    if (keep && (!capture.retrieve(frame) || frame.empty())) return;
+    if (!on_frame(index, keep ? frame : skipped)) return;
+  }
+}
+
 }  // namespace fieldlines
