@@ -68,7 +68,9 @@ TEST(DemoWalkthrough, ProposeCorrectAndAcceptLabelsTheDemoInAFractionOfTheAction
   for (std::size_t i = 0; i < c.image_count(); ++i) {
     const auto& segs = c.project().images[i].segments;
     for (std::size_t k = 0; k < segs.size(); ++k) {
-      if (i >= static_cast<std::size_t>(demo.labelled_images)) ASSERT_EQ(segs[k].label, truth[i][k]) << i << " " << k;
+      if (i >= static_cast<std::size_t>(demo.labelled_images)) {
+        ASSERT_EQ(segs[k].label, truth[i][k]) << i << " " << k;
+      }
     }
   }
   const std::size_t actions = keys + corrections;
