@@ -11,6 +11,7 @@
 #include "app/cli/args.hpp"
 #include "app/cli/commands.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/data/split_spec.hpp"
 #include "fieldlines/train/splits.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
 #include "fieldlines/train/training.hpp"
@@ -121,8 +122,10 @@ int cmd_train(const Args& args) {
   ProtocolSpec spec = apply_training_options(a, start);
   if (const auto v = a.value("--split"); v && !parse_split_mode(*v, spec.split))
     throw Error("--split: expected image or row, got '" + *v + "'");
-  const double fraction = a.double_or("--train-fraction", 0.7, 1e-9, 1.0);
-  const int seed = a.int_or("--seed", 1, 0, 2147483647);
+  // The defaults are SplitSpec's, the one rule the studio's test split uses too.
+  const SplitSpec split_defaults;
+  const double fraction = a.double_or("--train-fraction", split_defaults.train_fraction, 1e-9, 1.0);
+  const int seed = a.int_or("--seed", static_cast<int>(split_defaults.seed), 0, 2147483647);
   spec.train.pso.seed = static_cast<std::uint64_t>(seed);
   const int folds = a.int_or("--folds", 0, 2, 50);  // 0: no cross-validation
   const bool quiet = a.flag("--quiet");
