@@ -1,12 +1,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include <filesystem>
+
 #include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "cli_test_support.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "shared_data.hpp"
 
 namespace fieldlines {
 namespace {
@@ -214,6 +218,34 @@ TEST(Detector, ThreadsGiveTheSegmentsOfOneThread) {
     }
     EXPECT_GT(segments, 20u) << "k=" << kernel;
   }
+}
+
+// The authors' frames as they are and scaled to 1280x720 and 1920x1080 (what --detector-threads
+// is for), both parameter sets: two threads give the one-thread segments.
+TEST(Detector, ThreadsGiveTheSegmentsOfOneThreadOnTheAuthorsFrames) {
+  FIELDLINES_REQUIRE_SHARED("data/elsed-ssl/images", dir);
+  DetectorParams method, elsed;
+  elsed.gaussian_kernel = 5;  // original ELSED
+  int frames = 0;
+  for (const DetectorParams& one : {method, elsed}) {
+    DetectorParams two = one;
+    two.threads = 2;
+    LineDetector d1(one), d2(two);
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      const cv::Mat bgr = cv::imread(entry.path().string(), cv::IMREAD_COLOR);
+      if (bgr.empty()) continue;
+      ++frames;
+      for (const cv::Size s : {bgr.size(), cv::Size(1280, 720), cv::Size(1920, 1080)}) {
+        if (frames % 4 != 0 && s != bgr.size()) continue;  // scaled: every 4th frame keeps the test short
+        cv::Mat img;
+        cv::resize(bgr, img, s, 0, 0, cv::INTER_LINEAR);
+        const std::string what = cv::format("%s k=%d %dx%d", entry.path().filename().string().c_str(),
+                                            one.gaussian_kernel, s.width, s.height);
+        expect_same_segments(d2.detect(img), d1.detect(img), what);
+      }
+    }
+  }
+  EXPECT_EQ(frames, 82);
 }
 
 // A moved detector keeps its threads working; destroying one with started threads joins them.
