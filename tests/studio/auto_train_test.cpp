@@ -21,11 +21,19 @@ fs::ControllerOptions with_auto_train(bool on) {
   return o;
 }
 
-// Thresholds that predict almost no marking: what auto-train has to correct.
-fieldlines::Thresholds blind_marking(fieldlines::Thresholds t) {
-  t.marking.thresholds.max_angle_deg = 3;
-  return t;
-}
+// The review project, starting from thresholds that predict almost no marking (what auto-train
+// has to correct); `start` keeps them.
+struct Blind {
+  explicit Blind(bool auto_train) : r(with_auto_train(auto_train)), c(*r.controller) {
+    fieldlines::Thresholds t = c.thresholds();
+    t.marking.thresholds.max_angle_deg = 3;
+    c.set_thresholds(t);
+    start = c.thresholds();
+  }
+  studio_test::ReviewProject r;
+  fs::StudioController& c;
+  fieldlines::Thresholds start;
+};
 
 // Labels `per_class` true markings and as many unlabelled non-features of image 0 from segment `from`
 // on (two undo steps; image 0 holds its markings first, at 0..199).
@@ -58,10 +66,8 @@ double marking_recall_on_image1(studio_test::ReviewProject& r) {
 }
 
 TEST(StudioAutoTrain, OffLeavesTheThresholdsAlone) {
-  studio_test::ReviewProject r(with_auto_train(false));
-  fs::StudioController& c = *r.controller;
-  c.set_thresholds(blind_marking(c.thresholds()));
-  const fieldlines::Thresholds start = c.thresholds();
+  Blind b(false);
+  auto& [r, c, start] = b;
   label_truth(r, 20);
   c.wait_for_auto_train();
   EXPECT_FALSE(c.auto_train_busy());
@@ -70,9 +76,8 @@ TEST(StudioAutoTrain, OffLeavesTheThresholdsAlone) {
 }
 
 TEST(StudioAutoTrain, ALabelChangeRetrainsAndPredictionsFollowTheLabels) {
-  studio_test::ReviewProject r(with_auto_train(true));
-  fs::StudioController& c = *r.controller;
-  c.set_thresholds(blind_marking(c.thresholds()));
+  Blind b(true);
+  auto& [r, c, start] = b;
   const double before = marking_recall_on_image1(r);
   EXPECT_LT(before, 0.2);
   const std::size_t labelled = label_truth(r, 20);
@@ -89,9 +94,8 @@ TEST(StudioAutoTrain, ALabelChangeRetrainsAndPredictionsFollowTheLabels) {
 }
 
 TEST(StudioAutoTrain, ProposalsAreRemadeWithTheRetrainedThresholds) {
-  studio_test::ReviewProject r(with_auto_train(true));
-  fs::StudioController& c = *r.controller;
-  c.set_thresholds(blind_marking(c.thresholds()));
+  Blind b(true);
+  auto& [r, c, start] = b;
   c.propose();
   label_truth(r, 20);
   c.wait_for_auto_train();
@@ -117,10 +121,8 @@ TEST(StudioAutoTrain, ALabelChangeDuringARetrainingStartsAnotherWithAllLabels) {
 }
 
 TEST(StudioAutoTrain, TurnedOffWhileRunningKeepsTheUsersThresholds) {
-  studio_test::ReviewProject r(with_auto_train(true));
-  fs::StudioController& c = *r.controller;
-  c.set_thresholds(blind_marking(c.thresholds()));
-  const fieldlines::Thresholds start = c.thresholds();
+  Blind b(true);
+  auto& [r, c, start] = b;
   label_truth(r, 20);
   c.poll();
   c.set_auto_train(false);
