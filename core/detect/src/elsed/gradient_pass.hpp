@@ -26,8 +26,7 @@ class GradientPass {
  public:
   // Allocates the kernel; call when the parameters change, not per frame.
   void configure(int gaussian_kernel, double gaussian_sigma, int gradient_threshold);
-  // bgr: 8-bit, 3 channels, at least 1x1. Fills `maps` (resized by capacity), rows
-  // [row_begin, row_end) only; the whole image by default.
+  // bgr: 8-bit, 3 channels, at least 1x1. Sizes `maps` (by capacity) and fills all of it.
   void run(const cv::Mat& bgr, GradientMaps& maps);
   // Rows [row_begin, row_end) of `maps`, already sized for bgr (size_maps): the same bits as the
   // whole-image pass, since the band reads the rows above and below it that its ring needs and
@@ -35,9 +34,9 @@ class GradientPass {
   // bands of one `maps` at once (each pass has its own scratch).
   void run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begin, int row_end);
   static void size_maps(const cv::Mat& bgr, GradientMaps& maps);
-  // Row bands worth running for `rows` rows on `threads` threads: each band recomputes 2r + 2
-  // smoothed rows its neighbour also computes, so no band is thinner than kMinBandRows or twice
-  // the kernel; 1 means the whole image in one pass.
+  // Row bands worth running for `rows` rows on `threads` threads: at each band edge 2r + 2
+  // smoothed rows are computed by both neighbours, so no band is thinner than kMinBandRows or
+  // twice the kernel; 1 means the whole image in one pass.
   int band_count(int rows, int threads) const;
   static constexpr int kMinBandRows = 32;
 
