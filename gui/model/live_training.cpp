@@ -2,6 +2,7 @@
 // improve, label what it still gets wrong". In its own file because it is one concept.
 #include <algorithm>
 #include <cstdio>
+#include <tuple>
 
 #include "gui/model/studio_controller.hpp"
 
@@ -16,14 +17,9 @@ void StudioController::set_auto_train(bool on) {
 void StudioController::start_auto_train() {
   auto_train_pending_ = false;
   AutoTrainInput in;
-  for (std::size_t img = 0; img < image_count(); ++img) {
-    const auto& segs = project_.images[img].segments;
-    in.all.insert(in.all.end(), segs.begin(), segs.end());
-    for (std::size_t i = 0; i < segs.size(); ++i) {
-      if (segs[i].label != Label::Unlabelled) (is_test_segment(img, i) ? in.test : in.train).push_back(segs[i]);
-    }
-  }
+  std::tie(in.train, in.test) = labelled_by_split();
   if (in.train.empty()) return;  // nothing to learn from yet: proposals (P) stay label-free
+  in.all = all_segments();
   in.start = project_.thresholds;
   in.params = proposal_params();
   auto_train_.start(std::move(in));

@@ -34,10 +34,9 @@ std::size_t StudioController::refresh_proposals(const Thresholds& t) {
 }
 
 std::string StudioController::propose() {
-  std::vector<Segment> all;
-  for (const ImageEntry& e : project_.images) all.insert(all.end(), e.segments.begin(), e.segments.end());
   const LabelledSet labelled = project_.labelled();
-  const ProposalThresholds made = proposal_thresholds(all, labelled.segments, project_.thresholds, proposal_params());
+  const ProposalThresholds made =
+      proposal_thresholds(all_segments(), labelled.segments, project_.thresholds, proposal_params());
   const std::size_t proposed = refresh_proposals(made.thresholds);
   proposal_summary_ = std::to_string(proposed) + " proposals (marking " + std::string(to_string(made.marking)) +
                       ", boundary " + std::string(to_string(made.boundary)) + ")";

@@ -407,14 +407,25 @@ void StudioController::detect_all(bool only_undetected) {
   detection_.start(std::move(items), project_.detector, project_.thresholds);
 }
 
-void StudioController::start_training(const TrainParams& params) {
-  std::vector<Segment> train_set, test_set;
+std::vector<Segment> StudioController::all_segments() const {
+  std::vector<Segment> all;
+  for (const ImageEntry& e : project_.images) all.insert(all.end(), e.segments.begin(), e.segments.end());
+  return all;
+}
+
+std::pair<std::vector<Segment>, std::vector<Segment>> StudioController::labelled_by_split() const {
+  std::pair<std::vector<Segment>, std::vector<Segment>> split;
   for (std::size_t img = 0; img < image_count(); ++img) {
     const auto& segs = project_.images[img].segments;
     for (std::size_t i = 0; i < segs.size(); ++i) {
-      if (segs[i].label != Label::Unlabelled) (is_test_segment(img, i) ? test_set : train_set).push_back(segs[i]);
+      if (segs[i].label != Label::Unlabelled) (is_test_segment(img, i) ? split.second : split.first).push_back(segs[i]);
     }
   }
+  return split;
+}
+
+void StudioController::start_training(const TrainParams& params) {
+  auto [train_set, test_set] = labelled_by_split();
   training_.start(std::move(train_set), std::move(test_set), project_.thresholds, params);
 }
 

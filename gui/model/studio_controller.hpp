@@ -217,6 +217,9 @@ class StudioController {
   // Re-proposes every unlabelled segment that has a proposal slot with `t` (review.cpp).
   std::size_t refresh_proposals(const Thresholds& t);
   void start_auto_train();
+  // Every segment of the project, in image order (labels kept); the labelled ones by split.
+  std::vector<Segment> all_segments() const;
+  std::pair<std::vector<Segment>, std::vector<Segment>> labelled_by_split() const;  // train, test
   void adopt_auto_train(const AutoTrainResult& result);
 
   Project project_;
