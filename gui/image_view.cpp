@@ -107,11 +107,9 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
   const auto predictions = controller.predictions();
   // Hover: the segments under the cursor in screen pixels, nearest first; Space cycles through
   // them (none while dragging a rectangle or panning).
-  std::vector<std::size_t> candidates;
-  if (hovered && !state.rect_active) {
-    candidates = studio::segments_under(segments, state.view, mouse, state.pick_radius_px);
-  }
-  const std::optional<std::size_t> under = state.cycle.update(controller.current(), candidates, segments);
+  state.under.clear();
+  if (hovered && !state.rect_active) studio::segments_under(segments, state.view, mouse, state.pick_radius_px, state.under);
+  const std::optional<std::size_t> under = state.cycle.update(controller.current(), state.under, segments);
   if (under) state.focus.reset();
   const bool focus_here = state.focus && state.focus_image == controller.current() && *state.focus < segments.size();
   if (under || (hovered && !state.rect_active && !focus_here)) {

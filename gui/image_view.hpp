@@ -3,6 +3,7 @@
 // gestures that become controller commands (hover, click to label, drag a rectangle, pan, zoom).
 #include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "gui/gl_texture.hpp"
 #include "gui/model/hover_cycle.hpp"
@@ -25,6 +26,7 @@ struct ImageViewState {
   studio::MissedPaintView missed;   // its cached computation
   studio::ViewSettings settings;  // line width (Label tab)
   studio::HoverCycle cycle;       // which of the segments under the cursor is hovered (Space: next)
+  std::vector<std::size_t> under;  // the segments under the cursor this frame (a reused buffer)
   GlTexture texture;
   std::size_t texture_generation = static_cast<std::size_t>(-1);
   bool texture_tinted = false;  // the texture holds missed.tinted(), not the plain image

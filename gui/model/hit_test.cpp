@@ -33,23 +33,29 @@ std::optional<std::size_t> nearest_segment(std::span<const Segment> segments, co
   return best;
 }
 
-std::vector<std::size_t> segments_under(std::span<const Segment> segments, const ViewTransform& view, Vec2 cursor,
-                                        float max_distance_px) {
-  struct Hit {
-    float distance;
-    std::size_t index;
-  };
-  std::vector<Hit> hits;
+void segments_under(std::span<const Segment> segments, const ViewTransform& view, Vec2 cursor, float max_distance_px,
+                    std::vector<std::size_t>& out) {
+  out.clear();
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const ScreenSegment s = to_screen(segments[i], view);
-    const float d = distance_to_segment(cursor, s.a, s.b);
-    if (d <= max_distance_px) hits.push_back({d, i});
+    if (distance_to_segment(cursor, s.a, s.b) <= max_distance_px) out.push_back(i);
   }
-  std::sort(hits.begin(), hits.end(),
-            [](const Hit& a, const Hit& b) { return a.distance < b.distance || (a.distance == b.distance && a.index < b.index); });
+  // Few segments are ever this close, so the distances are recomputed in the comparison rather
+  // than kept in a second buffer.
+  const auto distance = [&](std::size_t i) {
+    const ScreenSegment s = to_screen(segments[i], view);
+    return distance_to_segment(cursor, s.a, s.b);
+  };
+  std::sort(out.begin(), out.end(), [&](std::size_t a, std::size_t b) {
+    const float da = distance(a), db = distance(b);
+    return da < db || (da == db && a < b);
+  });
+}
+
+std::vector<std::size_t> segments_under(std::span<const Segment> segments, const ViewTransform& view, Vec2 cursor,
+                                        float max_distance_px) {
   std::vector<std::size_t> out;
-  out.reserve(hits.size());
-  for (const Hit& h : hits) out.push_back(h.index);
+  segments_under(segments, view, cursor, max_distance_px, out);
   return out;
 }
 

@@ -32,6 +32,10 @@ std::optional<std::size_t> nearest_segment(std::span<const Segment> segments, co
 // reached; the first is nearest_segment's.
 std::vector<std::size_t> segments_under(std::span<const Segment> segments, const ViewTransform& view, Vec2 cursor,
                                         float max_distance_px);
+// The same into `out` (cleared first): the studio hovers every frame and reuses one buffer, so
+// hovering allocates nothing once the buffer has grown.
+void segments_under(std::span<const Segment> segments, const ViewTransform& view, Vec2 cursor, float max_distance_px,
+                    std::vector<std::size_t>& out);
 
 // Indices (ascending) of the segments with any point inside `screen_rect` (either corner order).
 std::vector<std::size_t> segments_in_rect(std::span<const Segment> segments, const ViewTransform& view,

@@ -110,3 +110,20 @@ TEST(HitTest, SegmentsUnderListsEveryOverlappingSegmentNearestFirst) {
     }
   }
 }
+
+TEST(HitTest, SegmentsUnderIntoABufferReusesItsStorage) {
+  const std::vector<Segment> segs{seg(0, 20, 100, 20), seg(0, 10, 100, 10), seg(0, 10.5f, 100, 10.5f)};
+  fs::ViewTransform view;
+  view.set(2, {0, 0});
+  const fs::Vec2 on_second = (fs::to_screen(segs[2], view).a + fs::to_screen(segs[2], view).b) * 0.5f;
+  std::vector<std::size_t> under{7, 7, 7, 7};  // stale content from an earlier frame is cleared
+  fs::segments_under(segs, view, on_second, 30, under);
+  EXPECT_EQ(under, fs::segments_under(segs, view, on_second, 30));
+  // Later frames (the studio calls it every frame while hovering) write into the same storage.
+  const std::size_t* storage = under.data();
+  for (const fs::Vec2 p : {on_second, fs::Vec2{40, 30}, fs::Vec2{100, 50}, fs::Vec2{50, 300}}) {
+    fs::segments_under(segs, view, p, 30, under);
+    EXPECT_EQ(under, fs::segments_under(segs, view, p, 30));
+    EXPECT_EQ(under.data(), storage);
+  }
+}
