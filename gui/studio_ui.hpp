@@ -8,6 +8,7 @@
 
 #include "fieldlines/train/protocols.hpp"
 #include "fieldlines/train/training.hpp"
+#include "gui/model/folder_listing.hpp"
 #include "gui/model/frame_stats.hpp"
 #include "gui/image_view.hpp"
 #include "gui/model/studio_controller.hpp"
@@ -44,6 +45,7 @@ struct UiState {
   std::string export_message;
   bool export_failed = false;       // export_message is an error
   std::string export_preview;
+  studio::FolderListing export_folders;  // the folder browser's listing, reread once a second
   std::vector<std::string> recent_projects;
   std::string open_request;    // a project the user asked to open (the main loop swaps sessions)
   std::string status_message;  // shown in the status bar

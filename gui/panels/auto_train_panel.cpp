@@ -73,9 +73,7 @@ void draw_auto_train(studio::StudioController& controller) {
   if (!controller.proposal_summary().empty()) ImGui::TextWrapped("%s", controller.proposal_summary().c_str());
   const auto& curve = controller.learning_curve();
   if (curve.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("learning curve (test F1 over labels): appears once you label with auto-train on");
-    ImGui::PopStyleColor();
+    wrapped_hint("learning curve (test F1 over labels): appears once you label with auto-train on");
     return;
   }
   const studio::CurvePoint& last = curve.back();

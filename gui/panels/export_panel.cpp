@@ -1,17 +1,16 @@
 // Export tab: write the robot's thresholds file (path entry + folder browser), show it, import one.
 // The typed path is read by gui/model/export_path.hpp (~, the relative base, a missing folder).
-#include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <string>
 #include <system_error>
-#include <vector>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
 #include "fieldlines/detect/atomic_file.hpp"
 #include "gui/model/export_path.hpp"
+#include "gui/model/folder_listing.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
@@ -21,31 +20,19 @@ namespace fs = std::filesystem;
 
 // A minimal folder browser: click a folder to enter it, ".." to go up; the chosen folder
 // replaces the folder part of the export path. Starts in the nearest existing folder of `folder`.
-void folder_browser(std::string& path, fs::path folder, const std::string& file) {
+void folder_browser(studio::FolderListing& listing, std::string& path, fs::path folder, const std::string& file) {
   std::error_code ec;
   while (folder.has_relative_path() && !fs::is_directory(folder, ec)) folder = folder.parent_path();
   ImGui::TextDisabled("%s", folder.string().c_str());
   ImGui::BeginChild("folders", {0, 120}, true);
   if (ImGui::Selectable("..")) path = (folder.parent_path() / file).string();
-  std::vector<fs::path> folders;
-  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-    if (it->is_directory(ec) && it->path().filename().string().rfind('.', 0) != 0) folders.push_back(it->path());
-  }
-  std::sort(folders.begin(), folders.end());
-  for (const fs::path& f : folders) {
+  for (const fs::path& f : listing.subfolders(folder, ImGui::GetTime())) {
     if (ImGui::Selectable((f.filename().string() + "/").c_str())) path = (f / file).string();
   }
   ImGui::EndChild();
 }
 
 const ImVec4 kErrorColour{1, 0.4f, 0.4f, 1};
-
-// Long paths wrap instead of running off the side panel.
-void wrapped_text(const ImVec4& colour, const std::string& text) {
-  ImGui::PushStyleColor(ImGuiCol_Text, colour);
-  ImGui::TextWrapped("%s", text.c_str());
-  ImGui::PopStyleColor();
-}
 
 // The path as written, with symbolic links and ".." resolved, for the "wrote ..." line.
 std::string written_path(const fs::path& path) {
@@ -95,8 +82,7 @@ void draw_export_panel(studio::StudioController& controller, UiState& ui) {
   if (!target.ok()) {
     wrapped_text(kErrorColour, target.error);
   } else {
-    wrapped_text(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),
-                 "-> " + target.path.string() + (target.from_base ? "  (from the project folder)" : ""));
+    wrapped_hint("-> " + target.path.string() + (target.from_base ? "  (from the project folder)" : ""));
     if (!target.folder_exists) {
       wrapped_text({1, 0.7f, 0.3f, 1}, "folder " + target.path.parent_path().string() + " does not exist yet");
     }
@@ -146,7 +132,7 @@ void draw_export_panel(studio::StudioController& controller, UiState& ui) {
   });
   ImGui::EndDisabled();
   wrapped_text(ui.export_failed ? kErrorColour : ImGui::GetStyleColorVec4(ImGuiCol_Text), ui.export_message);
-  folder_browser(ui.export_path, target.ok() ? target.path.parent_path() : base,
+  folder_browser(ui.export_folders, ui.export_path, target.ok() ? target.path.parent_path() : base,
                  target.ok() ? target.path.filename().string() : "robot-thresholds.json");
   if (!ui.export_preview.empty()) {
     ImGui::BeginChild("preview", {0, 0}, true, ImGuiWindowFlags_HorizontalScrollbar);

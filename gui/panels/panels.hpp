@@ -1,5 +1,9 @@
 #pragma once
 // One function per tab of the studio's side bar; each draws state and calls the controller.
+#include <string>
+
+#include <imgui.h>
+
 #include "gui/model/studio_controller.hpp"
 #include "gui/studio_ui.hpp"
 
@@ -16,6 +20,11 @@ void draw_export_panel(studio::StudioController& controller, UiState& ui);
 
 // A "(?)" whose tooltip, `text`, opens above it: help that never covers what follows it.
 void help_marker(const char* text);
+
+// Text in `colour` that wraps at the panel's edge (long paths, summaries) instead of running off.
+void wrapped_text(const ImVec4& colour, const std::string& text);
+// The same in the style's dimmed text colour, for hints.
+void wrapped_hint(const std::string& text);
 
 // The colour legend of the current overlay mode (also drawn on the Label panel).
 void draw_legend(studio::OverlayMode mode);

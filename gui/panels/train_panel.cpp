@@ -68,17 +68,6 @@ void draw_scatter(const studio::TrainingSnapshot& snap, int dx, int dy) {
 }
 }  // namespace
 
-void help_marker(const char* text) {
-  ImGui::TextDisabled("(?)");
-  if (!ImGui::IsItemHovered()) return;
-  // Above the marker and left of its right edge (it sits at the right of the side panel): what
-  // follows below, e.g. the progress line, stays visible.
-  ImGui::SetNextWindowPos({ImGui::GetItemRectMax().x, ImGui::GetItemRectMin().y - 4}, ImGuiCond_Always, {1, 1});
-  ImGui::BeginTooltip();
-  ImGui::TextUnformatted(text);
-  ImGui::EndTooltip();
-}
-
 void draw_train_panel(studio::StudioController& controller, UiState& ui) {
   TrainParams& p = ui.train_params;
   draw_auto_train(controller);

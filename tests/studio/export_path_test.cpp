@@ -10,6 +10,7 @@
 #include "fieldlines/detect/error.hpp"
 #include "fixtures.hpp"
 #include "gui/model/export_path.hpp"
+#include "gui/model/folder_listing.hpp"
 #include "gui/model/studio_controller.hpp"
 
 namespace fs = std::filesystem;
@@ -123,4 +124,25 @@ TEST(ExportPath, UnwritablePlacesAreClearErrorsAndWriteNothing) {
   EXPECT_FALSE(fs::exists(target.path));
   EXPECT_THROW(fieldlines::studio::create_parent_folders("/proc/fieldlines-new/robot.json"), fieldlines::Error);
   EXPECT_FALSE(fs::exists("/proc/fieldlines-new"));
+}
+
+TEST(FolderListing, ListsSubfoldersOnceUntilTheFolderChangesOrTheListingAges) {
+  studio_test::TempDir root("listing");
+  fs::create_directories(root.path() / "b");
+  fs::create_directories(root.path() / "a" / "inner");
+  fs::create_directories(root.path() / ".hidden");
+  std::ofstream(root.path() / "file.json") << "{}";
+  fieldlines::studio::FolderListing listing(1.0);
+  const std::vector<fs::path> expected{root.path() / "a", root.path() / "b"};  // sorted, no files or dot folders
+  EXPECT_EQ(listing.subfolders(root.path(), 10.0), expected);
+  // Every frame of the next second reuses that listing, even if the disk changed meanwhile.
+  fs::create_directories(root.path() / "c");
+  for (double t = 10.0; t < 10.99; t += 1.0 / 60) EXPECT_EQ(listing.subfolders(root.path(), t), expected);
+  EXPECT_EQ(listing.listings(), 1u);
+  // Another folder is read at once; back to the first after a second shows the new folder.
+  EXPECT_EQ(listing.subfolders(root.path() / "a", 11.0), std::vector<fs::path>{root.path() / "a" / "inner"});
+  EXPECT_EQ(listing.subfolders(root.path(), 11.01).size(), 3u);
+  EXPECT_EQ(listing.listings(), 3u);
+  // A missing folder lists as empty, not as an error.
+  EXPECT_TRUE(listing.subfolders(root.path() / "missing", 12.0).empty());
 }

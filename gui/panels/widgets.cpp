@@ -1,0 +1,29 @@
+// Small text widgets the side-bar tabs share (declared in panels.hpp).
+#include <string>
+
+#include <imgui.h>
+
+#include "gui/panels/panels.hpp"
+
+namespace fieldlines::gui {
+
+void help_marker(const char* text) {
+  ImGui::TextDisabled("(?)");
+  if (!ImGui::IsItemHovered()) return;
+  // Above the marker and left of its right edge (it sits at the right of the side panel): what
+  // follows below, e.g. the progress line, stays visible.
+  ImGui::SetNextWindowPos({ImGui::GetItemRectMax().x, ImGui::GetItemRectMin().y - 4}, ImGuiCond_Always, {1, 1});
+  ImGui::BeginTooltip();
+  ImGui::TextUnformatted(text);
+  ImGui::EndTooltip();
+}
+
+void wrapped_text(const ImVec4& colour, const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+void wrapped_hint(const std::string& text) { wrapped_text(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), text); }
+
+}  // namespace fieldlines::gui
