@@ -239,3 +239,32 @@ TEST_F(Cli, AClassWithoutDataIsNotApplicableNotZero) {
   const nlohmann::json marking = nlohmann::json::parse(fl::read_file(dir_ / "e.json"))["total"]["marking"];
   EXPECT_TRUE(marking["precision"].is_number()) << marking;
 }
+
+TEST_F(Cli, AProjectsRecordedSplitIsTheDefaultAndOptionsOverrideIt) {
+  // The studio records its test split in the project; `fieldlines train project.json` must test
+  // on the same segments, so the provenance and the test part follow the recorded split.
+  const fs::path data = csv("a.csv", 300), proj = dir_ / "p.json";
+  fl::Project project = fl::project_from_reference_rows(fl::read_reference_csv(data));
+  project.split = {fl::SplitMode::ByRow, 0.5, 7};
+  project.save(proj);
+  const std::string common = " --particles 10 --iterations 10 --quiet -o ";
+  ASSERT_EQ(run("train " + proj.string() + common + (dir_ / "t.json").string()).code, 0);
+  const nlohmann::json p = fl::load_thresholds_file(dir_ / "t.json").provenance;
+  EXPECT_EQ(p["split"], "row");
+  EXPECT_DOUBLE_EQ(p["train_fraction"].get<double>(), 0.5);
+  EXPECT_EQ(p["seed"], 7);
+  EXPECT_EQ(p["counts"]["test_segments"], 150);  // half of the rows, not 30 % of the images
+  // The same data as a CSV keeps SplitSpec's defaults (by image, 0.7, seed 1).
+  ASSERT_EQ(run("train " + data.string() + common + (dir_ / "c.json").string()).code, 0);
+  const nlohmann::json c = fl::load_thresholds_file(dir_ / "c.json").provenance;
+  EXPECT_EQ(c["split"], "image");
+  EXPECT_EQ(c["seed"], 1);
+  EXPECT_EQ(c["counts"]["test_segments"], 90);  // 6 of the 20 images, 15 rows each
+  // Options override the recorded split, one by one.
+  ASSERT_EQ(run("train " + proj.string() + " --split image --seed 3" + common + (dir_ / "o.json").string()).code, 0);
+  const nlohmann::json o = fl::load_thresholds_file(dir_ / "o.json").provenance;
+  EXPECT_EQ(o["split"], "image");
+  EXPECT_EQ(o["seed"], 3);
+  EXPECT_DOUBLE_EQ(o["train_fraction"].get<double>(), 0.5);
+  EXPECT_EQ(o["counts"]["test_segments"], 150);  // 10 of the 20 images
+}

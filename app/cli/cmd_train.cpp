@@ -1,5 +1,6 @@
 // `fieldlines train`: PSO-train the classification thresholds on labelled data and write the
 // thresholds file the robot loads.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -29,7 +30,8 @@ constexpr const char* kHelp = R"(usage: fieldlines train DATA... -o FILE [option
 Trains the classification thresholds on labelled segments and writes the thresholds file
 (schema: docs/training.md). DATA is a labelling project file or a reference annotation CSV;
 several are pooled. The data is split into train and test parts; the file's provenance records
-both parts' precision and recall. With --folds K, a K-fold cross-validation with the same
+both parts' precision and recall. A project's recorded split (the studio's test split) is the
+default; --split, --train-fraction and --seed override it. With --folds K, a K-fold cross-validation with the same
 options runs first: its per-fold test precision/recall, mean and standard deviation go to stderr
 and to the provenance ("cross_validation"); the thresholds written are then trained as without
 it. Progress on stderr, a summary on stdout.
@@ -40,6 +42,7 @@ options:
   --train-fraction F   share of images/rows used for training, (0, 1] (default 0.7;
                        1 trains on everything and leaves no test part)
   --seed S             seed of the split and of PSO (default 1)
+                       (these defaults are a project's recorded split when DATA is one)
   --folds K            cross-validate over K folds first: 2..50, at most the number of
                        images (of rows with --split row); split and seeded like the above
 )";
@@ -120,12 +123,16 @@ int cmd_train(const Args& args) {
   Thresholds start = data[0].project.thresholds;
   const DetectorParams detector = data[0].project.detector;
   ProtocolSpec spec = apply_training_options(a, start);
+  // The split the first DATA records: a project's is the studio's test split, so training the
+  // project here tests on the segments the studio tests on; a CSV records SplitSpec's defaults.
+  // Options override it, and so does --protocol's split mode (the paper's splits by row).
+  const SplitSpec recorded = data[0].project.split;
+  if (!a.has("--protocol")) spec.split = recorded.mode;
   if (const auto v = a.value("--split"); v && !parse_split_mode(*v, spec.split))
     throw Error("--split: expected image or row, got '" + *v + "'");
-  // The defaults are SplitSpec's, the one rule the studio's test split uses too.
-  const SplitSpec split_defaults;
-  const double fraction = a.double_or("--train-fraction", split_defaults.train_fraction, 1e-9, 1.0);
-  const int seed = a.int_or("--seed", static_cast<int>(split_defaults.seed), 0, 2147483647);
+  const double fraction = a.double_or("--train-fraction", recorded.train_fraction, 1e-9, 1.0);
+  const int seed = a.int_or("--seed", static_cast<int>(std::min<std::uint64_t>(recorded.seed, 2147483647)), 0,
+                            2147483647);
   spec.train.pso.seed = static_cast<std::uint64_t>(seed);
   const int folds = a.int_or("--folds", 0, 2, 50);  // 0: no cross-validation
   const bool quiet = a.flag("--quiet");
