@@ -1,10 +1,12 @@
 #include "gui/model/overlay_style.hpp"
 
 #include "fieldlines/detect/enum_names.hpp"
+#include "gui/model/shortcuts.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 
 namespace fieldlines::studio {
 
@@ -20,13 +22,19 @@ constexpr LegendEntry class_entry(Label label, const char* text, float thickness
   return {text, {opaque(palette::label_rgb(label)), Stroke::Solid, thickness}, palette::label_transition(label)};
 }
 
-constexpr std::array kLabelLegend{
-    class_entry(Label::Marking, "marking"),
-    class_entry(Label::Boundary, "boundary"),
-    class_entry(Label::None, "none"),
-    LegendEntry{"unlabelled", {kUnlabelled, Stroke::Solid, 2}},
-    LegendEntry{"proposed (P), Enter accepts", {kMarking, Stroke::Dashed, 2}},
-};
+// Built on first use: the proposal row names its keys from the shortcut table.
+std::span<const LegendEntry> label_legend() {
+  static const std::string proposed = "proposed (" + key_for(Action::Propose) + "), " +
+                                      key_for(Action::AcceptProposals) + " accepts";
+  static const std::array rows{
+      class_entry(Label::Marking, "marking"),
+      class_entry(Label::Boundary, "boundary"),
+      class_entry(Label::None, "none"),
+      LegendEntry{"unlabelled", {kUnlabelled, Stroke::Solid, 2}},
+      LegendEntry{proposed, {kMarking, Stroke::Dashed, 2}},
+  };
+  return rows;
+}
 constexpr std::array kPredictionLegend{
     class_entry(Label::Marking, "predicted marking"),
     class_entry(Label::Boundary, "predicted boundary"),
@@ -115,7 +123,7 @@ std::vector<DashPiece> dash_pieces(Stroke stroke, float thickness, float length)
 
 std::span<const LegendEntry> legend(OverlayMode mode) {
   switch (mode) {
-    case OverlayMode::Labels: return kLabelLegend;
+    case OverlayMode::Labels: return label_legend();
     case OverlayMode::Prediction: return kPredictionLegend;
     case OverlayMode::Agreement: return kAgreementLegend;
   }

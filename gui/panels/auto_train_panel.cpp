@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "gui/model/overlay_style.hpp"
+#include "gui/model/shortcuts.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
@@ -64,7 +65,7 @@ void draw_auto_train(studio::StudioController& controller) {
   ImGui::SameLine();
   if (ImGui::Button("Propose labels")) controller.propose();
   ImGui::SameLine();
-  ImGui::TextDisabled("(P)");
+  ImGui::TextDisabled("(%s)", studio::key_for(studio::Action::Propose).c_str());
   if (controller.auto_train() && controller.auto_train_busy()) {
     ImGui::TextUnformatted("retraining...");
   } else if (!controller.auto_train_summary().empty()) {

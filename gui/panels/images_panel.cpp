@@ -22,7 +22,8 @@ void draw_images_panel(studio::StudioController& controller, UiState& ui) {
   ImGui::Combo("order", &ui.image_order, "file order\0least certain first\0");
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("least certain first: images whose unlabelled segments lie closest to a\n"
-                      "threshold boundary come first (Tab jumps to the single least certain one)");
+                      "threshold boundary come first (%s jumps to the single least certain one)",
+                      studio::key_for(studio::Action::FocusUncertain).c_str());
   }
   ImGui::Text("%zu labelled segments in %zu images", controller.labelled_total(), controller.image_count());
   if (!ui.recent_projects.empty() && ImGui::CollapsingHeader("Recent projects")) {

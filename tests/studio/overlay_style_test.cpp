@@ -14,6 +14,7 @@
 
 #include "fixtures.hpp"
 #include "gui/model/overlay_style.hpp"
+#include "gui/model/shortcuts.hpp"
 
 namespace fs = fieldlines::studio;
 using fieldlines::Label;
@@ -114,6 +115,18 @@ TEST(OverlayStyle, EveryLegendExplainsEachClassByItsColourTransition) {
   EXPECT_EQ(std::string(fieldlines::palette::label_transition(Label::Marking)), "green <-> white paint");
   EXPECT_EQ(std::string(fieldlines::palette::label_transition(Label::Boundary)), "green -> black (field edge)");
   EXPECT_EQ(std::string(fieldlines::palette::label_transition(Label::None)), "anything else");
+}
+
+TEST(OverlayStyle, TheProposalRowNamesItsKeysFromTheShortcutTable) {
+  const auto rows = fs::legend(fs::OverlayMode::Labels);
+  const auto row = std::find_if(rows.begin(), rows.end(), [](const fs::LegendEntry& e) { return e.style.stroke == fs::Stroke::Dashed; });
+  ASSERT_NE(row, rows.end());
+  const std::string text(row->text);
+  // Appended, not "(" + key: GCC 12 warns falsely (-Wrestrict) on a literal + std::string&&.
+  std::string propose = "(";
+  propose.append(fs::key_for(fs::Action::Propose)).append(")");
+  EXPECT_NE(text.find(propose), std::string::npos) << text;
+  EXPECT_NE(text.find(fs::key_for(fs::Action::AcceptProposals) + " accepts"), std::string::npos) << text;
 }
 
 TEST(OverlayStyle, DashesAndDotsTellApartAtFitZoom) {
