@@ -1,5 +1,8 @@
 // Background jobs without a window: training start/progress/cancel/finish/apply and detection,
 // always handed over through poll() on the calling ("UI") thread.
+// Long (~500 lines) because the job type and the jobs built on it (training, detection, video
+// frames) share one poll-until-done harness, and their start/cancel/failure cases read best
+// side by side.
 #include <gtest/gtest.h>
 
 #include <algorithm>
