@@ -57,7 +57,8 @@ while IFS= read -r file; do
        [[ "$layer" == detect || "$layer" == data || "$layer" == train || "$layer" == synth || "$layer" == model ]]; then
       fail "$where: window-system include in $layer: $text"
     fi
-    if [[ "$text" =~ \#include[[:space:]]*\<(fieldlines/[^>]*)\> ]]; then
+    # Angle brackets name our own headers too when they start with a layer's folder.
+    if [[ "$text" =~ \#include[[:space:]]*\<((fieldlines|gui|app)/[^>]*)\> ]]; then
       name="${BASH_REMATCH[1]}"
     elif [[ "$text" =~ \#include[[:space:]]*\"([^\"]*)\" ]]; then
       name="${BASH_REMATCH[1]}"
