@@ -2,36 +2,38 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/train/random.hpp"
 
 namespace fieldlines::studio {
 
 Project write_bench_scene(const std::filesystem::path& folder, const BenchSceneParams& params) {
   std::filesystem::create_directories(folder);
-  std::mt19937 rng(params.seed);
-  std::uniform_real_distribution<float> ux(0, static_cast<float>(params.width - 1)),
-      uy(0, static_cast<float>(params.height - 1)), len(15, 120), angle(0, 6.2831853f), grad(-255, 255);
+  // The one seeded generator (fieldlines/train/random.hpp): the same scene with every library.
+  SplitMix64 rng(params.seed);
+  const auto uniform = [&](float lo, float hi) { return lo + (hi - lo) * static_cast<float>(rng.uniform()); };
+  const float w = static_cast<float>(params.width - 1), h = static_cast<float>(params.height - 1);
+  const auto grad = [&] { return uniform(-255, 255); };
   cv::Mat image(params.height, params.width, CV_8UC3, cv::Scalar(40, 140, 40));
   ImageEntry entry;
   entry.path = "bench.png";
   entry.detect_ms = 1;  // marks it as detected
   for (int i = 0; i < params.segments; ++i) {
     Segment s;
-    s.x0 = ux(rng), s.y0 = uy(rng);
-    const float l = len(rng), a = angle(rng);
-    s.x1 = std::clamp(s.x0 + l * std::cos(a), 0.0f, static_cast<float>(params.width - 1));
-    s.y1 = std::clamp(s.y0 + l * std::sin(a), 0.0f, static_cast<float>(params.height - 1));
+    s.x0 = uniform(0, w), s.y0 = uniform(0, h);
+    const float l = uniform(15, 120), a = uniform(0, 6.2831853f);
+    s.x1 = std::clamp(s.x0 + l * std::cos(a), 0.0f, w);
+    s.y1 = std::clamp(s.y0 + l * std::sin(a), 0.0f, h);
     s.saliency = l;
-    s.grad_x = {grad(rng), grad(rng), grad(rng)};
-    s.grad_y = {grad(rng), grad(rng), grad(rng)};
-    s.label = static_cast<Label>(static_cast<int>(rng() % 4) - 1);
+    s.grad_x = {grad(), grad(), grad()};
+    s.grad_y = {grad(), grad(), grad()};
+    s.label = static_cast<Label>(static_cast<int>(rng.next() % 4) - 1);
     // Unlabelled segments carry a proposal, so the frame draws the review loop's dashed strokes.
-    entry.proposals.push_back(s.label == Label::Unlabelled ? static_cast<Label>(rng() % 3) : Label::Unlabelled);
+    entry.proposals.push_back(s.label == Label::Unlabelled ? static_cast<Label>(rng.next() % 3) : Label::Unlabelled);
     cv::line(image, {static_cast<int>(s.x0), static_cast<int>(s.y0)}, {static_cast<int>(s.x1), static_cast<int>(s.y1)},
              cv::Scalar(235, 235, 235), 3);
     entry.segments.push_back(s);
