@@ -1,4 +1,5 @@
-# `cpack -G DEB` in the build folder builds four Debian packages, one per install component:
+# `cpack -G DEB` in the build folder builds one Debian package per install component (five with
+# the Python module; tests/package_split_test.sh checks what each holds):
 #   libfieldlines-detect0  the robot's runtime: libfieldlines_detect.so.* and nothing else
 #   libfieldlines0         the tuning libraries (data, train, synth) the tools need
 #   libfieldlines-dev      headers, CMake package, .so links (static archives when built static)
