@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # arm64 (aarch64) proof: cross-compiles fieldlines::detect, the CLI and the core tests with
-# Debian's g++-aarch64-linux-gnu against Debian's arm64 OpenCV, runs the detector, classifier
-# and fidelity tests under qemu-user, and packages the robot's library as an arm64 .deb.
+# Debian's g++-aarch64-linux-gnu against Debian's arm64 OpenCV, runs the detector, classifier,
+# fidelity and fieldlines::detect unit tests under qemu-user, and packages the robot's library
+# as an arm64 .deb.
 #
 #   bash scripts/arm64.sh          (test stage `arm64` of scripts/test.sh)
 #
@@ -16,8 +17,12 @@
 #      OpenCV development packages the release build needs;
 #   3. cmake --preset arm64 (cmake/aarch64-linux-gnu.cmake; no studio, benchmarks or Python)
 #      and a build of fieldlines_detect, the CLI and the tests below, at most -j2;
-#   4. the tests under qemu-aarch64 -L sysroot; the fidelity test must print 472/472 and
-#      1843/1843, and the CLI must run;
+#   4. the tests under qemu-aarch64 -L sysroot, each of which must pass (and run at least one
+#      test); the fidelity test must print 472/472 and 1843/1843, and the CLI must run. Besides
+#      the detector, classifier and fidelity tests: the fieldlines::detect tests that start no
+#      CLI child process (gradient_pass_test checks the NEON gradient kernels bit for bit
+#      against OpenCV; detect_allocation_test that a warm detect() allocates nothing; the
+#      atomic-file, JSON-file, thresholds-file and default-assets tests);
 #   5. cpack -G DEB -D CPACK_COMPONENTS_ALL=detect: libfieldlines-detect0_<v>_arm64.deb, whose
 #      Architecture must be arm64 and whose Depends come from the arm64 packages' symbols.
 # Env: FIELDLINES_ARM64_JOBS (default 2), FIELDLINES_ARM64_TESTS (the test executables to run).
@@ -29,7 +34,8 @@ jobs="${FIELDLINES_ARM64_JOBS:-2}"
 out="$root/build/arm64"
 sysroot="$out/sysroot"
 aptdir="$out/apt"
-tests=(${FIELDLINES_ARM64_TESTS:-detector_test classifier_test detector_fidelity_test})
+tests=(${FIELDLINES_ARM64_TESTS:-detector_test classifier_test detector_fidelity_test gradient_pass_test
+        detect_allocation_test atomic_file_test json_file_test thresholds_file_test assets_test})
 say() { echo "arm64: $*" >&2; }
 elapsed() { echo "$((SECONDS - start)) s"; }
 
@@ -153,7 +159,8 @@ for t in "${tests[@]}"; do
   log="$out/$t.qemu.log"
   rm -f "$log"
   say "running $t under $(basename "$qemu")"
-  if run "$out/tests/$t" --gtest_brief=1 >"$log" 2>&1; then
+  if run "$out/tests/$t" --gtest_brief=1 >"$log" 2>&1 \
+     && grep -qE '^\[  PASSED  \] [1-9][0-9]* tests?\.' "$log"; then
     grep -E '^\[  PASSED  \]|SKIPPED' "$log" >&2 || true
   else
     cat "$log" >&2; say "$t FAILED"; failed=1
