@@ -13,6 +13,7 @@
 #include "fieldlines/data/project.hpp"
 #include "fieldlines/data/reference_csv.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
+#include "fieldlines/train/splits.hpp"
 #include "shared_data.hpp"
 
 namespace fl = fieldlines;
@@ -267,4 +268,11 @@ TEST_F(Cli, AProjectsRecordedSplitIsTheDefaultAndOptionsOverrideIt) {
   EXPECT_EQ(o["seed"], 3);
   EXPECT_DOUBLE_EQ(o["train_fraction"].get<double>(), 0.5);
   EXPECT_EQ(o["counts"]["test_segments"], 150);  // 10 of the 20 images
+  // A recorded seed beyond --seed's range is used whole, as the studio uses it.
+  project.split = {fl::SplitMode::ByRow, 0.5, 5'000'000'000ull};
+  project.save(proj);
+  ASSERT_EQ(run("train " + proj.string() + common + (dir_ / "b.json").string()).code, 0);
+  const nlohmann::json b = fl::load_thresholds_file(dir_ / "b.json").provenance;
+  EXPECT_EQ(b["seed"].get<std::uint64_t>(), 5'000'000'000ull);
+  EXPECT_EQ(b["counts"]["test_segments"], fl::split_train_test(project.labelled(), project.split).test.size());
 }

@@ -1,6 +1,5 @@
 // `fieldlines train`: PSO-train the classification thresholds on labelled data and write the
 // thresholds file the robot loads.
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -131,9 +130,10 @@ int cmd_train(const Args& args) {
   if (const auto v = a.value("--split"); v && !parse_split_mode(*v, spec.split))
     throw Error("--split: expected image or row, got '" + *v + "'");
   const double fraction = a.double_or("--train-fraction", recorded.train_fraction, 1e-9, 1.0);
-  const int seed = a.int_or("--seed", static_cast<int>(std::min<std::uint64_t>(recorded.seed, 2147483647)), 0,
-                            2147483647);
-  spec.train.pso.seed = static_cast<std::uint64_t>(seed);
+  // A recorded seed is used whole: the studio splits with all 64 bits of it.
+  const std::uint64_t seed =
+      a.has("--seed") ? static_cast<std::uint64_t>(a.int_or("--seed", 0, 0, 2147483647)) : recorded.seed;
+  spec.train.pso.seed = seed;
   const int folds = a.int_or("--folds", 0, 2, 50);  // 0: no cross-validation
   const bool quiet = a.flag("--quiet");
   if (folds > 0) {
@@ -145,11 +145,11 @@ int cmd_train(const Args& args) {
                   (by_row ? " labelled rows" : " images (--split image)") + ", so at most " +
                   std::to_string(units) + " folds" + (by_row ? "" : "; --split row splits by row"));
   }
-  const Split split = split_train_test(all, spec.split, fraction, static_cast<std::uint64_t>(seed));
+  const Split split = split_train_test(all, spec.split, fraction, seed);
   const LabelledSet train_set = all.subset(split.train), test_set = all.subset(split.test);
   std::optional<CrossValidation> cv;
   if (folds > 0) {
-    cv = cross_validate(all, start, spec, folds, static_cast<std::uint64_t>(seed), quiet);
+    cv = cross_validate(all, start, spec, folds, seed, quiet);
     if (!quiet) print_cross_validation(stderr, *cv);
   }
 
