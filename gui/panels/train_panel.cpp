@@ -152,9 +152,7 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
       }
       // Until the thresholds change again (a slider, an import, auto-train, another Apply).
       if (ui.applied_thresholds && *ui.applied_thresholds == controller.thresholds()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{0.5f, 0.9f, 0.5f, 1});
-        ImGui::TextWrapped("%s", ui.applied_message.c_str());
-        ImGui::PopStyleColor();
+        wrapped_text({0.5f, 0.9f, 0.5f, 1}, ui.applied_message);
       }
     }
   }
