@@ -8,7 +8,7 @@ namespace fieldlines::studio {
 namespace fs = std::filesystem;
 
 const std::vector<fs::path>& FolderListing::subfolders(const fs::path& folder, double now_s) {
-  if (listed_ && folder == folder_ && now_s - listed_at_s_ < max_age_s_) return subfolders_;
+  if (listings_ > 0 && folder == folder_ && now_s - listed_at_s_ < max_age_s_) return subfolders_;
   subfolders_.clear();
   std::error_code ec;
   for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
@@ -17,7 +17,6 @@ const std::vector<fs::path>& FolderListing::subfolders(const fs::path& folder, d
   std::sort(subfolders_.begin(), subfolders_.end());
   folder_ = folder;
   listed_at_s_ = now_s;
-  listed_ = true;
   ++listings_;
   return subfolders_;
 }

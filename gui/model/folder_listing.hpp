@@ -23,7 +23,6 @@ class FolderListing {
   double max_age_s_;
   std::filesystem::path folder_;
   double listed_at_s_ = 0;
-  bool listed_ = false;
   std::size_t listings_ = 0;
   std::vector<std::filesystem::path> subfolders_;
 };
