@@ -6,7 +6,7 @@
 #
 #   bash scripts/arm64.sh          (test stage `arm64` of scripts/test.sh)
 #
-# Steps (README, "On the robot" > "arm64"):
+# Steps (docs/robot.md, "arm64"):
 #   1. host tools: g++-aarch64-linux-gnu, qemu-user-static (apt-get when root, else the apt line);
 #   2. sysroot build/arm64/sysroot: a private apt (own state and cache under build/arm64/apt,
 #      arm64 only, empty status) resolves the arm64 runtime closure of the OpenCV modules we

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Before/after overlays of label-free calibration for the README, on data we generate (never the
+# Before/after overlays of label-free calibration for docs/calibration.md, on data we generate (never the
 # authors'): 20 synthetic Kid frames of seed 7 over every lighting condition, calibrated without a
 # label, one frame drawn with the default thresholds and with the calibrated ones.
 #   usage: bash scripts/calibration_overlays.sh [FRAME_INDEX]   (default 11)
@@ -17,6 +17,6 @@ frame="$work/frames/kid_7_$index.png"
 "$bin" detect "$frame" --thresholds "$work/robot.json" --draw "$work/after" --quiet
 cp "$work/before/kid_7_$index.png" docs/screenshots/calibrate-kid-before.png
 cp "$work/after/kid_7_$index.png" docs/screenshots/calibrate-kid-after.png
-# The figures the README quotes beside them: the whole set against its exact ground truth.
+# The figures docs/calibration.md quotes beside them: the whole set against its exact ground truth.
 "$bin" autolabel "$work/frames" -o "$work/truth.json" --quiet
 "$bin" eval "$work/truth.json" --thresholds "$work/robot.json" | tail -1

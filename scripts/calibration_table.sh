@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Reproduces the label-free calibration tables of the README with the built CLI.
+# Reproduces the label-free calibration tables of docs/calibration.md with the built CLI.
 #  1. The authors' five annotation files: each calibrated with its label columns cut off, then
 #     scored against the human labels on all rows (`fieldlines eval`).
 #  2. Synthetic sets: calibrated on the images of seed 1 (all lighting conditions), scored

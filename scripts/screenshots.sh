@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Refreshes the README's studio screenshots (docs/screenshots/studio-*.png): runs the real-window
+# Refreshes the studio screenshots of docs/studio.md (docs/screenshots/studio-*.png): runs the real-window
 # test that takes them, pointed at docs/screenshots instead of the build folder.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -128,7 +128,7 @@ TEST(CalibrationShared, MeetsTheBarsOnTheAuthorsFilesWithoutTheirLabels) {
     EXPECT_GE(e.total.marking.recall(), 0.90);
     EXPECT_EQ(c.boundary.thresholds.has_value(), bar.has_boundary) << c.boundary.refused;
     if (bar.has_boundary) {
-      // Reported in the README per file; asserted here with room below the measured figures.
+      // Reported per file in docs/calibration.md; asserted here with room below the measured figures.
       EXPECT_GE(e.total.boundary.precision(), 0.90);
       EXPECT_GE(e.total.boundary.recall(), 0.75);
     } else {

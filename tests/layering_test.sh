@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The include layering of the source tree (README, "Architecture"): dependencies point one way,
+# The include layering of the source tree (docs/architecture.md): dependencies point one way,
 #   core/detect <- core/data <- core/train <- core/synth;  gui/model -> core;
 #   gui (panels, widgets) -> gui/model;  app/cli -> core;  app/studio -> gui;
 #   python (the module) -> detect, data, train;

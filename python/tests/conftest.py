@@ -49,6 +49,6 @@ def frame():
     rows = np.arange(480)[:, None]
     cols = np.arange(640)[None, :]
     image[np.abs(rows - (240 + 0.05 * cols)) < 4] = (235, 235, 235)
-    # Tilted so that the edges cross the detector's anchor grid (README, "Fidelity").
+    # Tilted so that the edges cross the detector's anchor grid (docs/detector.md, "Fidelity").
     image[rows < 40 + 0.07 * cols] = (10, 10, 10)
     return image

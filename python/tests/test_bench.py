@@ -1,4 +1,4 @@
-"""python/bench.py runs end to end (a smoke run; the figures are in the README)."""
+"""python/bench.py runs end to end (a smoke run; the figures are in docs/python.md)."""
 import json
 import os
 import subprocess

@@ -54,7 +54,7 @@ def test_matches_the_cli_segment_for_segment(ssl_images_dir, ssl_images, cli, tm
                 assert ours[field].tolist() == np.float32(theirs[field]).tolist(), (where, field)
             assert fieldlines.LABELS[ours["label"]] == theirs["label"], where
         total += len(segs)
-    assert total == 472  # README, "Fidelity": the reference's count
+    assert total == 472  # docs/detector.md, "Fidelity": the reference's count
 
 
 def test_reused_detector_equals_a_fresh_one(frame):
@@ -77,7 +77,7 @@ def test_read_only_input(frame):
 
 
 def test_grey_bgra_and_16_bit_as_in_cpp(frame):
-    """README, "Input images": grey replicated, alpha dropped, 16-bit scaled by 1/256."""
+    """docs/detector.md, "Input images": grey replicated, alpha dropped, 16-bit scaled by 1/256."""
     detector = fieldlines.LineDetector()
     bgr = detector.detect(frame)
     bgra = np.dstack([frame, np.full(frame.shape[:2], 255, np.uint8)])

@@ -3,7 +3,7 @@
 // with auto-train retraining in the background after every change. The user's corrections
 // come from the frames' exact ground truth, so the project ends fully and correctly labelled;
 // the test counts the actions against one per segment, and prints the final test-split figures
-// (README, "Reviewing proposals").
+// (docs/studio.md, "Reviewing proposals").
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -83,7 +83,7 @@ TEST(DemoWalkthrough, ProposeCorrectAndAcceptLabelsTheDemoInAFractionOfTheAction
               test.boundary.precision(), test.boundary.recall(), c.auto_train_summary().c_str());
   // Measured: 54 actions for 182 segments. The demo's frames hold few segments each (SSL at
   // a distance), so its test split is small (35 markings) and the length bound learned from
-  // 46 train markings misses the short far ones there (recall 0.31, README): asserted is what
+  // 46 train markings misses the short far ones there (recall 0.31, docs/studio.md): asserted is what
   // holds with margin, not what we would like.
   EXPECT_LT(actions * 3, open_at_start);
   EXPECT_GT(c.test_segment_count(), 100u);

@@ -1,7 +1,7 @@
 // The review loop in the real window: a fresh folder of synthetic Kid frames, P to propose,
 // Enter once per image, quit. Every segment ends up labelled, and the labels agree with the
 // frames' exact ground truth (as `fieldlines autolabel` gives it): 90.2 % on this set (seed 5,
-// 20 frames); asserted at 88 %, because other sets of our renderer gave 85-89 % (README).
+// 20 frames); asserted at 88 %, because other sets of our renderer give 85-89 % (docs/studio.md).
 #include <gtest/gtest.h>
 
 #include <chrono>

@@ -1,6 +1,6 @@
 // Soak: the real studio under Xvfb driven with seeded random clicks, drags, wheel turns and keys
 // (labels, undo/redo, navigation, panels, training start/stop) for $FIELDLINES_SOAK_SECONDS
-// (default 40; the README's figure is from 600). Every second the studio must still be running;
+// (default 40; docs/studio.md's figure is from 600). Every second the studio must still be running;
 // its resident memory after warm-up must stay flat; at the end it quits cleanly (exit 0), the
 // project loads, and its log holds no error.
 #include <gtest/gtest.h>
