@@ -56,7 +56,9 @@ for kind in speed accuracy; do
   [[ "$begin" == 1 && "$end" == 1 ]] || fail "README.md needs one benchmarks:$kind begin and end marker (has $begin, $end)"
   first=$(grep -n "^<!-- benchmarks:$kind:begin -->\$" "$readme" | cut -d: -f1 | head -1)
   last=$(grep -n "^<!-- benchmarks:$kind:end -->\$" "$readme" | cut -d: -f1 | head -1)
-  [[ -n "$first" && -n "$last" ]] && ((first < last)) || fail "benchmarks:$kind: begin must come before end"
+  if [[ -z "$first" || -z "$last" ]] || ((first >= last)); then
+    fail "benchmarks:$kind: begin must come before end"
+  fi
   sed -n "${first:-1},${last:-1}p" "$readme" | grep -q '^| ' || fail "benchmarks:$kind holds no table"
 done
 
@@ -70,6 +72,9 @@ grep -qxF "$test_line" "$source_dir/.ci/run" || fail ".ci/run does not run exact
 for script in setup demo test; do
   [[ -f "$source_dir/scripts/$script.sh" ]] || fail "scripts/$script.sh is missing"
 done
+# What the README says of them: setup builds the release preset, demo opens that build.
+grep -qF 'preset="${1:-release}"' "$source_dir/scripts/setup.sh" || fail "scripts/setup.sh no longer builds the release preset by default"
+grep -qF 'build/release/app' "$source_dir/scripts/demo.sh" || fail "scripts/demo.sh no longer runs build/release's programs"
 
 # --- The robot's snippet is what the consumer test compiles -----------------------------------
 consumer="$source_dir/tests/consumer/detect"
