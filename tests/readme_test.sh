@@ -73,6 +73,7 @@ for script in setup demo test; do
   [[ -f "$source_dir/scripts/$script.sh" ]] || fail "scripts/$script.sh is missing"
 done
 # What the README says of them: setup builds the release preset, demo opens that build.
+# shellcheck disable=SC2016  # the literal text of the script
 grep -qF 'preset="${1:-release}"' "$source_dir/scripts/setup.sh" || fail "scripts/setup.sh no longer builds the release preset by default"
 grep -qF 'build/release/app' "$source_dir/scripts/demo.sh" || fail "scripts/demo.sh no longer runs build/release's programs"
 
