@@ -16,7 +16,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "fieldlines/data/image_io.hpp"
-#include "app/cli/peer_detectors.hpp"
+#include "bench/peers/peer_detectors.hpp"
 
 namespace {
 
@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
   const std::vector<cv::Mat> frames = load_frames(source);
   std::printf("images: %zu from %s\n", frames.size(), source.c_str());
 
-  auto detectors = fieldlines::cli::make_timed_detectors();
+  auto detectors = fieldlines::peers::make_timed_detectors();
   for (auto& d : detectors) {
     benchmark::RegisterBenchmark(d.name.c_str(), [&frames, &d](benchmark::State& state) {
       std::size_t i = 0, segments = 0, calls = 0;

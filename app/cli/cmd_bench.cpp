@@ -17,8 +17,8 @@
 #include "fieldlines/data/image_io.hpp"
 #include "app/cli/image_inputs.hpp"
 #include "app/cli/output_file.hpp"
-#include "app/cli/peer_detectors.hpp"
 #include "app/cli/progress.hpp"
+#include "bench/peers/peer_detectors.hpp"
 
 namespace fieldlines::cli {
 namespace {
@@ -133,7 +133,7 @@ int cmd_bench(const Args& args) {
   // Single thread for everyone: OpenCV would otherwise parallelise some peers and not others.
   const int previous_threads = cv::getNumThreads();
   cv::setNumThreads(1);
-  auto detectors = make_timed_detectors(params);
+  auto detectors = peers::make_timed_detectors(params);
   std::vector<Timing> timings;
   for (const auto& d : detectors) timings.push_back({d.name, {}, 0});
 
