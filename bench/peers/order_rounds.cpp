@@ -15,7 +15,9 @@ double thread_cpu_ms() {
   return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
 }
 
-double timed_call(const TimedDetector& d, const cv::Mat& image, Clock clock) {
+}  // namespace
+
+double timed_call_ms(const TimedDetector& d, const cv::Mat& image, Clock clock) {
   if (clock == Clock::ThreadCpu) {
     const double t0 = thread_cpu_ms();
     d.run(image);
@@ -26,14 +28,12 @@ double timed_call(const TimedDetector& d, const cv::Mat& image, Clock clock) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-std::vector<std::size_t> shuffled(std::size_t n, std::mt19937_64& rng) {
+std::vector<std::size_t> random_order(std::size_t n, std::mt19937_64& rng) {
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::shuffle(order.begin(), order.end(), rng);
   return order;
 }
-
-}  // namespace
 
 const char* order_name(Order order) { return order == Order::Block ? "block" : "interleaved"; }
 const char* clock_name(Clock clock) { return clock == Clock::ThreadCpu ? "thread-cpu" : "wall"; }
@@ -70,13 +70,13 @@ std::vector<DetectorTimes> time_in_both_orders(const std::vector<TimedDetector>&
 
   std::mt19937_64 rng(params.seed);
   const auto block = [&](std::size_t round) {
-    for (const std::size_t d : shuffled(detectors.size(), rng)) {
+    for (const std::size_t d : random_order(detectors.size(), rng)) {
       detectors[d].run(images.front());  // its buffers and tables back in cache, untimed
       tick();
       auto& ms = out[d].ms[static_cast<int>(Order::Block)][round];
       for (int pass = 0; pass < params.passes; ++pass) {
         for (const auto& image : images) {
-          ms.push_back(timed_call(detectors[d], image, params.clock));
+          ms.push_back(timed_call_ms(detectors[d], image, params.clock));
           tick();
         }
       }
@@ -85,8 +85,8 @@ std::vector<DetectorTimes> time_in_both_orders(const std::vector<TimedDetector>&
   const auto interleaved = [&](std::size_t round) {
     for (int pass = 0; pass < params.passes; ++pass) {
       for (const auto& image : images) {
-        for (const std::size_t d : shuffled(detectors.size(), rng)) {
-          out[d].ms[static_cast<int>(Order::Interleaved)][round].push_back(timed_call(detectors[d], image, params.clock));
+        for (const std::size_t d : random_order(detectors.size(), rng)) {
+          out[d].ms[static_cast<int>(Order::Interleaved)][round].push_back(timed_call_ms(detectors[d], image, params.clock));
           tick();
         }
       }

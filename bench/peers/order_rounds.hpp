@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,11 @@ std::vector<DetectorTimes> time_in_both_orders(const std::vector<TimedDetector>&
                                                const std::vector<cv::Mat>& images, const RoundsParams& params,
                                                const std::function<void()>& advance = {});
 std::size_t calls_expected(std::size_t detectors, std::size_t images, const RoundsParams& params);
+
+// One call of `d` on `image`, timed by `clock`, in ms.
+double timed_call_ms(const TimedDetector& d, const cv::Mat& image, Clock clock);
+// 0..n-1 in a random order drawn from rng.
+std::vector<std::size_t> random_order(std::size_t n, std::mt19937_64& rng);
 
 // Linear interpolation between closest ranks (the usual "type 7" quantile); v not empty.
 double quantile(std::vector<double> v, double q);
