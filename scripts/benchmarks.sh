@@ -95,6 +95,8 @@ if [[ -x "$training_bench" ]]; then
   echo "benchmarks.sh: ${command[*]}" >&2
   "${command[@]}" --benchmark_out="$out/training.json" --benchmark_out_format=json > "$out/training.txt" 2>&1
   echo "${command[*]}" > "$out/training.command"
+else
+  echo "$training_bench" > "$out/training.missing"
 fi
 
 # Accuracy: the two existing table scripts, with this build.
@@ -194,7 +196,7 @@ readme_speed += ["",
 doc_lines += ["### Training and calibration", ""]
 training = read("training.json")
 if training is None:
-    doc_lines += ["Not measured: `build/release/bench/training_bench` is not built.", ""]
+    doc_lines += [f"Not measured: `{read('training.missing').strip()}` is not built.", ""]
 else:
     doc_lines += ["3,000 segments of the authors' D3 and D1 files (synthetic rows of the same mix without the",
                   "shared data); Google Benchmark, CPU time, median of 3 repetitions:", "",
