@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "bench/peers/order_rounds.hpp"
 #include "cli_test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -217,4 +219,93 @@ TEST_F(CliBench, DetectorThreadsReachOurRows) {
     EXPECT_EQ(usage.exit_code, 2) << bad;
     EXPECT_NE(usage.err.find("--detector-threads"), std::string::npos) << bad << ": " << usage.err;
   }
+}
+
+// The rounds behind `fieldlines bench`, with stand-in detectors that log their calls.
+TEST(BenchRounds, BlockRunsEachDetectorBackToBackAndInterleavedVisitsEveryImage) {
+  std::vector<std::pair<std::size_t, int>> log;  // (detector, image id) per call
+  std::vector<fieldlines::peers::TimedDetector> detectors;
+  const std::vector<std::string> names{"d0", "d1", "d2"};
+  for (std::size_t d = 0; d < 3; ++d)
+    detectors.push_back({names[d], "stand-in", [&log, d](const cv::Mat& image) {
+                           log.emplace_back(d, image.at<unsigned char>(0, 0));
+                           return d;  // "segments"
+                         }});
+  std::vector<cv::Mat> images;
+  for (int i = 0; i < 4; ++i) images.push_back(cv::Mat(2, 2, CV_8UC1, cv::Scalar(i)));
+  const fieldlines::peers::RoundsParams params{3, 2, 7, fieldlines::peers::Clock::Wall};
+  std::size_t ticks = 0;
+  const auto times = fieldlines::peers::time_in_both_orders(detectors, images, params, [&ticks] { ++ticks; });
+
+  EXPECT_EQ(ticks, fieldlines::peers::calls_expected(3, 4, params));
+  EXPECT_EQ(log.size(), ticks);
+  ASSERT_EQ(times.size(), 3u);
+  for (std::size_t d = 0; d < 3; ++d) {
+    EXPECT_EQ(times[d].name, names[d]);
+    EXPECT_DOUBLE_EQ(times[d].segments, 4.0 * static_cast<double>(d));  // the warm-up pass counts them
+    for (const auto& by_round : times[d].ms) {
+      ASSERT_EQ(by_round.size(), 3u);
+      for (const auto& calls : by_round) EXPECT_EQ(calls.size(), 8u);  // 2 passes x 4 images
+    }
+  }
+  // After the warm-up (12 calls), each round holds a block of 3 x (1 untimed + 8) calls, each
+  // detector's contiguous, and an interleaved part of 8 groups of 3: one image, every detector.
+  std::size_t at = 12, blocks = 0, interleaved = 0;
+  const auto is_block = [&](std::size_t from) {
+    for (std::size_t k = 1; k < 9; ++k)
+      if (log[from + k].first != log[from].first) return false;
+    return true;
+  };
+  for (int round = 0; round < 3; ++round) {
+    for (int part = 0; part < 2; ++part) {
+      if (is_block(at)) {
+        std::set<std::size_t> seen;
+        for (int d = 0; d < 3; ++d, at += 9) {
+          EXPECT_TRUE(is_block(at)) << "round " << round;
+          EXPECT_EQ(log[at].second, 0) << "the untimed call is on the first image";
+          seen.insert(log[at].first);
+        }
+        EXPECT_EQ(seen.size(), 3u);
+        ++blocks;
+      } else {
+        for (int group = 0; group < 8; ++group, at += 3) {
+          std::set<std::size_t> seen;
+          for (std::size_t k = 0; k < 3; ++k) {
+            seen.insert(log[at + k].first);
+            EXPECT_EQ(log[at + k].second, group % 4) << "round " << round;
+          }
+          EXPECT_EQ(seen.size(), 3u) << "round " << round;
+        }
+        ++interleaved;
+      }
+    }
+  }
+  EXPECT_EQ(at, log.size());
+  EXPECT_EQ(blocks, 3u);
+  EXPECT_EQ(interleaved, 3u);
+}
+
+TEST(BenchRounds, TheWorseOrderIsTheLargerRatioWithItsSpreadOverRounds) {
+  using fieldlines::peers::Order;
+  fieldlines::peers::DetectorTimes ours, peer;
+  // Per round medians: ours/peer is 0.5, 0.6, 0.7 in block order and 0.2, 0.3, 0.4 interleaved.
+  ours.ms[0] = {{1, 5, 9}, {6}, {7}};
+  peer.ms[0] = {{10}, {10}, {10}};
+  ours.ms[1] = {{2}, {3}, {4}};
+  peer.ms[1] = {{10}, {10}, {10, 10, 50}};
+  const auto r = fieldlines::peers::ratio_in_both_orders(ours, peer);
+  EXPECT_DOUBLE_EQ(r.by_order[0], 0.6);
+  EXPECT_DOUBLE_EQ(r.by_order[1], 0.3);
+  EXPECT_EQ(r.worse_order, Order::Block);
+  EXPECT_DOUBLE_EQ(r.worse, 0.6);
+  EXPECT_DOUBLE_EQ(r.min, 0.5);
+  EXPECT_DOUBLE_EQ(r.max, 0.7);
+  // Swapped orders: the interleaved one is now worse, and its own spread is reported.
+  std::swap(ours.ms[0], ours.ms[1]);
+  std::swap(peer.ms[0], peer.ms[1]);
+  const auto s = fieldlines::peers::ratio_in_both_orders(ours, peer);
+  EXPECT_EQ(s.worse_order, Order::Interleaved);
+  EXPECT_DOUBLE_EQ(s.worse, 0.6);
+  EXPECT_DOUBLE_EQ(s.min, 0.5);
+  EXPECT_DOUBLE_EQ(s.max, 0.7);
 }
