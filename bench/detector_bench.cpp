@@ -1,14 +1,25 @@
 // Google Benchmark: our detect+classify against OpenCV's EDLines, FastLineDetector and LSD and
 // the cvtColor + Gaussian 5x5 + Sobel x/y floor, single thread, same colour images, same process.
 // Images: ../shared/data/elsed-ssl/images when present (the method's 640x480 robot frames),
-// otherwise synthetic 640x480 fields. Prints each detector's time relative to ours at the end.
+// otherwise synthetic 640x480 fields. One iteration is one pass over all images, so every
+// detector is timed on the same frames.
 //
-//   build/release/bench/detector_bench [--benchmark_repetitions=5 --benchmark_report_aggregates_only=true]
+// A detector's time depends on what ran before it (bench/peers/order_rounds.hpp), so each is
+// timed in both orders: block/<name> calls one detector on every image back to back;
+// "interleaved" calls every detector once per image, in a random order per image, and times
+// each call on the thread's CPU clock (its counters, ms per image). By default 5 repetitions
+// run in a random interleaving, and the ratios at the end are per repetition, per order: the
+// worse order for us, with its min-max over repetitions, is what the targets are checked on.
+//
+//   build/release/bench/detector_bench [--benchmark_repetitions=7 --benchmark_enable_random_interleaving=true]
+//       [--benchmark_display_aggregates_only=false]   (shows every repetition, not only the aggregates)
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
+#include <random>
 #include <filesystem>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -16,7 +27,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "fieldlines/data/image_io.hpp"
-#include "app/cli/peer_detectors.hpp"
+#include "bench/peers/order_rounds.hpp"
+#include "bench/peers/peer_detectors.hpp"
 
 namespace {
 
@@ -58,30 +70,72 @@ std::vector<cv::Mat> load_frames(std::string& source) {
   return synthetic_frames();
 }
 
-// Console output as usual, plus each benchmark's CPU time per image for the ratio table: CPU
-// time, because the 2-core machine is shared and wall time also counts other processes' turns.
+namespace peers = fieldlines::peers;
+
+// Console output as usual, plus every repetition's ms per image of each detector in each order
+// (CPU time: the 2-core machine is shared and wall time also counts other processes' turns).
 class RatioReporter : public benchmark::ConsoleReporter {
  public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      const std::string name = r.run_name.function_name;
-      // With repetitions keep the median aggregate; otherwise the single run.
-      if (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median") continue;
-      if (r.run_type == Run::RT_Iteration && medians_.count(name)) continue;
-      if (r.run_type == Run::RT_Aggregate) medians_[name] = r.GetAdjustedCPUTime();
-      else times_[name] = r.GetAdjustedCPUTime();
+  RatioReporter(const std::vector<peers::TimedDetector>& detectors, std::size_t frames, bool aggregates_only)
+      : frames_(frames), aggregates_only_(aggregates_only) {
+    for (const auto& d : detectors) {
+      times_.push_back({});
+      times_.back().name = d.name;
+      medians_.push_back(times_.back());
     }
   }
-  double time(const std::string& name) const {
-    if (const auto it = medians_.find(name); it != medians_.end()) return it->second;
-    const auto it = times_.find(name);
-    return it == times_.end() ? 0.0 : it->second;
+  void ReportRuns(const std::vector<Run>& runs) override {
+    std::vector<Run> shown;
+    for (const Run& r : runs)
+      if (!aggregates_only_ || r.run_type == Run::RT_Aggregate) shown.push_back(r);
+    ConsoleReporter::ReportRuns(shown.empty() ? runs : shown);
+    for (const Run& r : runs) {
+      if (r.error_occurred) continue;
+      // Without repetitions (or with none reported) the median aggregates stand in, no spread.
+      const bool repetition = r.run_type == Run::RT_Iteration;
+      if (!repetition && r.aggregate_name != "median") continue;
+      auto& into = repetition ? times_ : medians_;
+      const std::string name = r.run_name.function_name;
+      for (auto& t : into) {
+        if (name == "block/" + t.name)
+          add(t, peers::Order::Block, repetition ? r.repetition_index : 0,
+              r.GetAdjustedCPUTime() / static_cast<double>(frames_));
+        else if (name == "interleaved" && r.counters.count(t.name))
+          add(t, peers::Order::Interleaved, repetition ? r.repetition_index : 0, r.counters.at(t.name).value);
+      }
+    }
+  }
+  // One "round" per repetition, holding that repetition's ms per image; the median aggregates
+  // as one round when the repetitions were not reported; empty when a benchmark was filtered out.
+  std::vector<peers::DetectorTimes> times() const {
+    for (const auto* set : {&times_, &medians_})
+      if (std::all_of(set->begin(), set->end(), complete)) return *set;
+    return {};
   }
 
  private:
-  std::map<std::string, double> times_, medians_;
+  static bool complete(const peers::DetectorTimes& t) {
+    for (const auto& rounds : t.ms) {
+      if (rounds.empty()) return false;
+      for (const auto& r : rounds)
+        if (r.empty()) return false;
+    }
+    return true;
+  }
+  static void add(peers::DetectorTimes& t, peers::Order order, std::int64_t repetition, double ms) {
+    auto& rounds = t.ms[static_cast<int>(order)];
+    const auto k = static_cast<std::size_t>(std::max<std::int64_t>(0, repetition));
+    if (rounds.size() <= k) rounds.resize(k + 1);
+    rounds[k].push_back(ms);
+  }
+  std::size_t frames_;
+  bool aggregates_only_;
+  std::vector<peers::DetectorTimes> times_, medians_;
 };
+
+std::string worse_text(const peers::RatioSummary& r) {
+  return cv::format("%.2f [%.2f-%.2f, %s]", r.worse, r.min, r.max, peers::order_name(r.worse_order));
+}
 
 }  // namespace
 
@@ -91,36 +145,81 @@ int main(int argc, char** argv) {
   const std::vector<cv::Mat> frames = load_frames(source);
   std::printf("images: %zu from %s\n", frames.size(), source.c_str());
 
-  auto detectors = fieldlines::cli::make_timed_detectors();
-  for (auto& d : detectors) {
-    benchmark::RegisterBenchmark(d.name.c_str(), [&frames, &d](benchmark::State& state) {
-      std::size_t i = 0, segments = 0, calls = 0;
-      for (auto _ : state) {
-        const std::size_t n = d.run(frames[i]);
-        benchmark::DoNotOptimize(n);
-        segments += n;
-        ++calls;
-        i = (i + 1) % frames.size();
-      }
-      state.counters["segments_per_image"] = static_cast<double>(segments) / static_cast<double>(std::max<std::size_t>(1, calls));
+  const auto detectors = peers::make_timed_detectors();
+  for (const auto& d : detectors) {
+    benchmark::RegisterBenchmark(("block/" + d.name).c_str(), [&frames, &d](benchmark::State& state) {
+      std::size_t segments = 0;
+      for (auto _ : state)
+        for (const auto& frame : frames) segments += d.run(frame);
+      state.counters["segments_per_image"] =
+          static_cast<double>(segments) / static_cast<double>(state.iterations() * frames.size());
       state.SetLabel(d.what);
     })->Unit(benchmark::kMillisecond);
   }
+  benchmark::RegisterBenchmark("interleaved", [&frames, &detectors](benchmark::State& state) {
+    std::mt19937_64 rng(1);
+    std::vector<double> ms(detectors.size(), 0.0);
+    for (auto _ : state)
+      for (const auto& frame : frames)
+        for (const std::size_t d : peers::random_order(detectors.size(), rng))
+          ms[d] += peers::timed_call_ms(detectors[d], frame, peers::Clock::ThreadCpu);
+    for (std::size_t d = 0; d < detectors.size(); ++d)
+      state.counters[detectors[d].name] =
+          benchmark::Counter(ms[d] / static_cast<double>(frames.size()), benchmark::Counter::kAvgIterations);
+    state.SetLabel("counters: ms per image of each detector, every detector once per image in a random order");
+  })->Unit(benchmark::kMillisecond);
 
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  RatioReporter reporter;
+  // Repetitions in a random interleaving unless asked otherwise: the per-repetition ratios and
+  // their spread need more than one, and the interleaving spreads the machine's drift.
+  // The aggregates-only flags are taken over here: Google Benchmark would hide the repetitions
+  // from this reporter too, and the ratios' spread is taken over them. Shown: aggregates only,
+  // unless =false.
+  std::vector<char*> args{argv[0]};
+  bool repetitions_given = false, aggregates_only = true;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    repetitions_given |= arg.rfind("--benchmark_repetitions", 0) == 0;
+    if (arg.rfind("--benchmark_report_aggregates_only", 0) == 0 || arg.rfind("--benchmark_display_aggregates_only", 0) == 0)
+      aggregates_only = arg.find("=false") == std::string::npos;
+    else
+      args.push_back(argv[i]);
+  }
+  std::string repetitions = "--benchmark_repetitions=5", interleaving = "--benchmark_enable_random_interleaving=true";
+  if (!repetitions_given) {
+    args.push_back(repetitions.data());
+    args.push_back(interleaving.data());
+  }
+  int count = static_cast<int>(args.size());
+  benchmark::Initialize(&count, args.data());
+  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 1;
+  RatioReporter reporter(detectors, frames.size(), aggregates_only);
   benchmark::RunSpecifiedBenchmarks(&reporter);
 
-  const double ours = reporter.time("fieldlines");
-  if (ours > 0) {
-    std::printf("\nfieldlines CPU time / other detector's CPU time (lower is better for us):\n");
-    for (const auto& d : detectors)
-      if (const double t = reporter.time(d.name); t > 0) std::printf("  %-10s %6.2f\n", d.name.c_str(), ours / t);
-    std::printf("targets: <= 0.40 vs edlines, <= 1.50 vs floor\n");
-    if (const double g = reporter.time("gradients"), f = reporter.time("floor"); g > 0 && f > 0)
-      std::printf("gradients only / floor: %.2f\n", g / f);
+  const std::vector<peers::DetectorTimes> times = reporter.times();
+  if (times.empty()) {
+    std::printf("\n(ratios need every block/<name> benchmark and interleaved: not filtered out)\n");
+    benchmark::Shutdown();
+    return 0;
   }
+  const auto row = [&](const std::string& name) -> const peers::DetectorTimes& {
+    return *std::find_if(times.begin(), times.end(), [&](const auto& t) { return t.name == name; });
+  };
+  std::printf("\nms per image (CPU time, median over %zu repetition(s)) and fieldlines / this (lower is better for us;\n"
+              "per repetition, the median over them; worse: the larger order, [min-max over repetitions, order]):\n",
+              times.front().ms[0].size());
+  std::printf("  %-11s %9s %11s %7s %8s  %s\n", "detector", "block ms", "interl. ms", "block", "interl.", "worse");
+  for (const auto& t : times) {
+    const peers::RatioSummary r = peers::ratio_in_both_orders(times.front(), t);
+    std::printf("  %-11s %9.3f %11.3f %7.2f %8.2f  %s\n", t.name.c_str(), peers::quantile(t.pooled(peers::Order::Block), 0.5),
+                peers::quantile(t.pooled(peers::Order::Interleaved), 0.5), r.by_order[0], r.by_order[1],
+                worse_text(r).c_str());
+  }
+  const peers::RatioSummary vs_edlines = peers::ratio_in_both_orders(times.front(), row("edlines"));
+  const peers::RatioSummary vs_floor = peers::ratio_in_both_orders(times.front(), row("floor"));
+  std::printf("targets, on the worse order: fieldlines/edlines = %s (<= 0.40: %s), fieldlines/floor = %s (<= 1.50: %s)\n",
+              worse_text(vs_edlines).c_str(), vs_edlines.worse <= 0.4 ? "met" : "NOT met", worse_text(vs_floor).c_str(),
+              vs_floor.worse <= 1.5 ? "met" : "NOT met");
+  std::printf("gradients only / floor = %s\n", worse_text(peers::ratio_in_both_orders(row("gradients"), row("floor"))).c_str());
   benchmark::Shutdown();
   return 0;
 }

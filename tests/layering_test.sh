@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The include layering of the source tree (docs/architecture.md): dependencies point one way,
 #   core/detect <- core/data <- core/train <- core/synth;  gui/model -> core;
-#   gui (panels, widgets) -> gui/model;  app/cli -> core;  app/studio -> gui;
+#   gui (panels, widgets) -> gui/model;  app/cli -> core, bench/peers;  bench/peers -> detect;
+#   app/studio -> gui;
 #   python (the module) -> detect, data, train;
 # no window-system include (ImGui, GLFW, OpenGL) in core/ or gui/model/; every quoted include
 # is either a file beside the includer or qualified from the project root or fieldlines/<lib>/.
@@ -16,7 +17,8 @@ layer_of_file() {
   case "$1" in
     core/detect/*) echo detect ;; core/data/*) echo data ;; core/train/*) echo train ;;
     core/synth/*) echo synth ;; gui/model/*) echo model ;; gui/*) echo gui ;;
-    app/cli/*) echo cli ;; app/studio/*) echo studio ;; python/*) echo python ;; *) echo other ;;
+    app/cli/*) echo cli ;; app/studio/*) echo studio ;; python/*) echo python ;;
+    bench/peers/*) echo peers ;; *) echo other ;;
   esac
 }
 layer_of_include() {
@@ -24,7 +26,7 @@ layer_of_include() {
     fieldlines/detect/*) echo detect ;; fieldlines/data/*) echo data ;;
     fieldlines/train/*) echo train ;; fieldlines/synth/*) echo synth ;;
     gui/model/*) echo model ;; gui/*) echo gui ;; app/cli/*) echo cli ;; app/studio/*) echo studio ;;
-    tests/*) echo other ;; *) echo unknown ;;
+    bench/peers/*) echo peers ;; tests/*) echo other ;; *) echo unknown ;;
   esac
 }
 # What each layer may include (besides itself).
@@ -36,10 +38,11 @@ allowed() {
     synth) echo "detect data train synth" ;;
     model) echo "detect data train synth model" ;;
     gui) echo "detect data train synth model gui" ;;
-    cli) echo "detect data train synth cli" ;;
+    cli) echo "detect data train synth peers cli" ;;
+    peers) echo "detect peers" ;;
     studio) echo "detect data train synth model gui studio" ;;
     python) echo "detect data train" ;;
-    other) echo "detect data train synth model gui cli studio other" ;;  # tests, bench, fuzzers
+    other) echo "detect data train synth model gui cli studio peers other" ;;  # tests, bench, fuzzers
   esac
 }
 

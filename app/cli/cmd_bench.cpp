@@ -1,6 +1,6 @@
 // `fieldlines bench`: our detector against OpenCV's line detectors, same process, same images.
 #include <algorithm>
-#include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -17,8 +17,9 @@
 #include "fieldlines/data/image_io.hpp"
 #include "app/cli/image_inputs.hpp"
 #include "app/cli/output_file.hpp"
-#include "app/cli/peer_detectors.hpp"
 #include "app/cli/progress.hpp"
+#include "bench/peers/order_rounds.hpp"
+#include "bench/peers/peer_detectors.hpp"
 
 namespace fieldlines::cli {
 namespace {
@@ -36,14 +37,30 @@ our rows may take more with --detector-threads):
   gradients   our gradient stage alone: one fused pass (grey, Gaussian, Sobel x/y, magnitude,
               direction), what the fieldlines row starts with
   floor       cvtColor + 5x5 Gaussian + Sobel x and y: what any gradient-based detector pays
-Each call starts from the BGR image (grey conversion is timed). Detectors are interleaved image
-by image so that machine load affects them alike. Prints the median and 90th percentile ms per
-image, segments per image and the ratio ours/theirs, then checks the targets
-ours <= 0.4 x edlines and ours <= 1.5 x floor (--floor-target), and prints gradients/floor.
+Each call starts from the BGR image (grey conversion is timed). A detector's time depends on
+what ran before it, so every row is timed in two orders, in --rounds rounds:
+  block        each detector makes all its calls of the round back to back (one untimed call
+               first), detectors in a random order
+  interleaved  image by image, every detector once per image, in a random order per image
+Each round runs the two orders in a random order (--seed). After one untimed warm-up pass
+(which also counts the segments), prints per row the median ms per call in each order,
+segments per image, and ours/this in each order: per round, our median call over this row's
+median call in that round; the median over rounds. "worse" is the larger of the two orders
+(the less flattering to us), with its min-max over rounds. The targets ours <= 0.4 x edlines
+and ours <= 1.5 x floor (--floor-target) are checked against the worse ratio; gradients/floor
+is reported the same way.
 PATH is an image or a folder; images that fail to load are reported and skipped (exit 1).
 
 options:
-  --repeat N    timed passes over all images (default 5); one untimed warm-up pass first
+  --rounds R    rounds (default 5, in [1, 10000]); the ratios' spread is taken over them
+  --repeat N    passes over all images in each order in each round (default 1, in [1, 10000]):
+                every detector is timed 2 x R x N times per image
+  --seed S      seed of the random orders (default 1, in [0, 2147483647])
+  --clock C     what a call's time is: thread-cpu (default with one detector thread) is the
+                calling thread's CPU time, which other processes' turns do not inflate (wall
+                time would flatter the short calls on a loaded machine: a 10 ms peer call is
+                preempted far more often than a 1 ms one); wall (the default, and the only
+                choice, with --detector-threads above 1, whose bands run on other threads)
   --floor-target X  the ours/floor ratio to check (default 1.5, the SSL target; the Humanoid
                 frames, larger and busier, have 2)
   --scale WxH   resize every loaded image to W x H pixels (cv::resize, INTER_LINEAR; stretched
@@ -52,33 +69,52 @@ options:
   --detector-threads N  DetectorParams::threads for the fieldlines and gradients rows (default
                 1, in [1, 64]): the gradient pass runs in N row bands at once; the peers and the
                 floor stay on one thread
-  --json OUT    write {"images":N,"scale":{"width","height"} (with --scale),"detector_threads":N,
-                "detectors":[{"name","median_ms","p90_ms","segments_per_image"}]}
+  --json OUT    write the results as JSON (below)
   --quiet       no progress on stderr
   -h, --help    this help
 
+JSON: {"images":N, "scale":{"width","height"} (with --scale only), "detector_threads":N,
+  "rounds":R, "passes_per_round":N, "seed":S, "clock":"thread-cpu"|"wall",
+  "detectors":[{"name", "median_ms", "p90_ms" (over every timed call, both orders),
+    "segments_per_image", "block":{"median_ms","p90_ms"}, "interleaved":{"median_ms","p90_ms"},
+    "ours_over_this":RATIO}],
+  "targets":{"edlines":TARGET, "floor":TARGET}, "gradients_over_floor":RATIO}
+  RATIO  = {"block", "interleaved", "worse", "worse_order" ("block" or "interleaved"), "min", "max"}
+           (min and max: the worse order's ratio over rounds)
+  TARGET = {"ratio" (the worse ours/this), "limit", "met", "order", "min", "max"}
+
 examples:
   fieldlines bench ../shared/data/elsed-ssl/images
-  fieldlines bench --repeat 20 --json bench.json frame.png
-  fieldlines bench --quiet --repeat 10 --scale 1920x1080 --detector-threads 2 ../shared/data/elsed-ssl/images
+  fieldlines bench --rounds 9 --json bench.json frame.png
+  fieldlines bench --quiet --rounds 7 --scale 1920x1080 --detector-threads 2 ../shared/data/elsed-ssl/images
 )";
 
-// Linear interpolation between closest ranks (the usual "type 7" quantile).
-double quantile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  const double pos = q * static_cast<double>(v.size() - 1);
-  const auto lo = static_cast<std::size_t>(pos);
-  const std::size_t hi = std::min(lo + 1, v.size() - 1);
-  return v[lo] + (pos - static_cast<double>(lo)) * (v[hi] - v[lo]);
+struct TargetCheck {
+  std::string label;  // "fieldlines/edlines"
+  peers::RatioSummary ratio;
+  double limit;
+  bool met() const { return ratio.worse <= limit; }
+};
+
+nlohmann::ordered_json calls_json(const std::vector<double>& ms) {
+  return {{"median_ms", peers::quantile(ms, 0.5)}, {"p90_ms", peers::quantile(ms, 0.9)}};
 }
 
-struct Timing {
-  std::string name;
-  std::vector<double> ms;
-  double segments = 0;  // summed over the first timed pass
-  double median() const { return quantile(ms, 0.5); }
-  double p90() const { return quantile(ms, 0.9); }
-};
+nlohmann::ordered_json ratio_json(const peers::RatioSummary& r) {
+  return {{"block", r.by_order[0]}, {"interleaved", r.by_order[1]},
+          {"worse", r.worse},       {"worse_order", peers::order_name(r.worse_order)},
+          {"min", r.min},           {"max", r.max}};
+}
+
+nlohmann::ordered_json target_json(const TargetCheck& t) {
+  return {{"ratio", t.ratio.worse}, {"limit", t.limit}, {"met", t.met()},
+          {"order", peers::order_name(t.ratio.worse_order)}, {"min", t.ratio.min}, {"max", t.ratio.max}};
+}
+
+// "0.31 [0.29-0.33, block]": the worse order's ratio, its spread over rounds and the order.
+std::string worse_text(const peers::RatioSummary& r) {
+  return cv::format("%.2f [%.2f-%.2f, %s]", r.worse, r.min, r.max, peers::order_name(r.worse_order));
+}
 
 // "WxH", both sides in [8, 8192] (FLD and LSD need a few pixels; 8192 keeps a frame's maps
 // far below any int overflow).
@@ -99,18 +135,30 @@ cv::Size parse_scale(const std::string& text) {
 }  // namespace
 
 int cmd_bench(const Args& args) {
-  const ParsedArgs a(args, {"--json", "--repeat", "--floor-target", "--scale", "--detector-threads"}, {"--quiet", "--help", "-h"});
+  const ParsedArgs a(args,
+                     {"--json", "--rounds", "--repeat", "--seed", "--clock", "--floor-target", "--scale",
+                      "--detector-threads"},
+                     {"--quiet", "--help", "-h"});
   if (a.flag("--help") || a.flag("-h")) {
     std::fputs(kHelp, stdout);
     return 0;
   }
   if (a.positionals().empty()) throw Error("no PATH given: name at least one image or folder (see --help)");
-  const int repeat = a.int_or("--repeat", 5, 1, 100000);
+  peers::RoundsParams rounds;
+  rounds.rounds = a.int_or("--rounds", 5, 1, 10000);
+  rounds.passes = a.int_or("--repeat", 1, 1, 10000);
+  rounds.seed = static_cast<std::uint64_t>(a.int_or("--seed", 1, 0, 2147483647));
   const double floor_target = a.double_or("--floor-target", 1.5, 0.1, 100);
   const std::optional<cv::Size> scale =
       a.has("--scale") ? std::optional<cv::Size>(parse_scale(*a.value("--scale"))) : std::nullopt;
   DetectorParams params;
   params.threads = a.int_or("--detector-threads", 1, 1, 64);
+  const std::string clock = a.value_or("--clock", params.threads == 1 ? "thread-cpu" : "wall");
+  if (clock != "thread-cpu" && clock != "wall")
+    throw Error("--clock: expected thread-cpu or wall, got '" + clock + "'");
+  if (clock == "thread-cpu" && params.threads > 1)
+    throw Error("--clock thread-cpu misses the work of --detector-threads' other threads: use --clock wall");
+  rounds.clock = clock == "wall" ? peers::Clock::Wall : peers::Clock::ThreadCpu;
   const std::optional<fs::path> json_out = a.has("--json") ? std::optional<fs::path>(*a.value("--json")) : std::nullopt;
   if (json_out) check_output_path("--json", *json_out);
 
@@ -133,63 +181,73 @@ int cmd_bench(const Args& args) {
   // Single thread for everyone: OpenCV would otherwise parallelise some peers and not others.
   const int previous_threads = cv::getNumThreads();
   cv::setNumThreads(1);
-  auto detectors = make_timed_detectors(params);
-  std::vector<Timing> timings;
-  for (const auto& d : detectors) timings.push_back({d.name, {}, 0});
-
-  ProgressParams pp;
-  if (a.flag("--quiet")) pp.mode = ProgressParams::Mode::Off;
+  const auto detectors = peers::make_timed_detectors(params);
+  std::vector<peers::DetectorTimes> times;
   {
-    Progress progress("bench", images.size() * static_cast<std::size_t>(repeat + 1), stderr, pp);
-    for (int pass = -1; pass < repeat; ++pass) {  // pass -1 warms caches and buffers, untimed
-      for (std::size_t i = 0; i < images.size(); ++i) {
-        // Rotate the starting detector per image so none always runs on a cold cache.
-        for (std::size_t k = 0; k < detectors.size(); ++k) {
-          const std::size_t d = (i + k) % detectors.size();
-          const auto t0 = std::chrono::steady_clock::now();
-          const std::size_t count = detectors[d].run(images[i]);
-          const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-          if (pass >= 0) timings[d].ms.push_back(ms);
-          if (pass == 0) timings[d].segments += static_cast<double>(count);
-        }
-        progress.advance();
-      }
-    }
+    ProgressParams pp;
+    if (a.flag("--quiet")) pp.mode = ProgressParams::Mode::Off;
+    Progress progress("bench", peers::calls_expected(detectors.size(), images.size(), rounds), stderr, pp);
+    times = peers::time_in_both_orders(detectors, images, rounds, [&progress] { progress.advance(); });
   }
   cv::setNumThreads(previous_threads);
 
-  const double ours = timings[0].median();
-  auto find = [&](const std::string& name) {
-    return std::find_if(timings.begin(), timings.end(), [&](const Timing& t) { return t.name == name; })->median();
+  const auto row = [&](const std::string& name) -> const peers::DetectorTimes& {
+    return *std::find_if(times.begin(), times.end(), [&](const auto& t) { return t.name == name; });
   };
+  const peers::DetectorTimes& ours = times.front();
   const std::string size_note = scale ? cv::format(" scaled to %dx%d", scale->width, scale->height) : "";
   const std::string thread_note =
       params.threads == 1 ? "single thread"
                           : cv::format("single thread (fieldlines and gradients: %d detector threads)", params.threads);
-  std::printf("%zu image%s%s x %d pass%s, %s, median over all timed calls\n\n", images.size(),
-              images.size() == 1 ? "" : "s", size_note.c_str(), repeat, repeat == 1 ? "" : "es", thread_note.c_str());
-  std::printf("%-11s %10s %10s %14s %12s\n", "detector", "median ms", "p90 ms", "segments/img", "ours/this");
+  std::printf("%zu image%s%s x %d round%s x %d pass%s in each order (block, interleaved; seed %llu), %s\n",
+              images.size(), images.size() == 1 ? "" : "s", size_note.c_str(), rounds.rounds,
+              rounds.rounds == 1 ? "" : "s", rounds.passes, rounds.passes == 1 ? "" : "es",
+              static_cast<unsigned long long>(rounds.seed), thread_note.c_str());
+  std::printf("ms: median call, %s time; ours/this: median over rounds of the round's ratio; worse: the larger, "
+              "[min-max over rounds, order]\n\n",
+              peers::clock_name(rounds.clock));
+  std::printf("%-11s %9s %11s %13s   %s\n", "", "", "", "", "------------ ours/this ------------");
+  std::printf("%-11s %9s %11s %13s   %6s %8s  %s\n", "detector", "block ms", "interl. ms", "segments/img", "block",
+              "interl.", "worse [min-max, order]");
   nlohmann::ordered_json detectors_json = nlohmann::ordered_json::array();
-  for (const auto& t : timings) {
+  for (const auto& t : times) {
     const double per_image = t.segments / static_cast<double>(images.size());
-    std::printf("%-11s %10.3f %10.3f %14.1f %12.2f\n", t.name.c_str(), t.median(), t.p90(), per_image,
-                ours / t.median());
-    detectors_json.push_back(
-        {{"name", t.name}, {"median_ms", t.median()}, {"p90_ms", t.p90()}, {"segments_per_image", per_image}});
+    const peers::RatioSummary r = peers::ratio_in_both_orders(ours, t);
+    const std::vector<double> block = t.pooled(peers::Order::Block), inter = t.pooled(peers::Order::Interleaved);
+    std::vector<double> all = block;
+    all.insert(all.end(), inter.begin(), inter.end());
+    std::printf("%-11s %9.3f %11.3f %13.1f   %6.2f %8.2f  %s\n", t.name.c_str(), peers::quantile(block, 0.5),
+                peers::quantile(inter, 0.5), per_image, r.by_order[0], r.by_order[1], worse_text(r).c_str());
+    nlohmann::ordered_json row_json{{"name", t.name}};
+    row_json.update(calls_json(all));  // "median_ms", "p90_ms" over both orders
+    row_json["segments_per_image"] = per_image;
+    row_json["block"] = calls_json(block);
+    row_json["interleaved"] = calls_json(inter);
+    row_json["ours_over_this"] = ratio_json(r);
+    detectors_json.push_back(std::move(row_json));
   }
-  const double vs_edlines = ours / find("edlines");
-  const double vs_floor = ours / find("floor");
-  std::printf("\ntargets: fieldlines/edlines = %.2f (<= 0.40: %s), fieldlines/floor = %.2f (<= %.2f: %s)\n",
-              vs_edlines, vs_edlines <= 0.4 ? "met" : "NOT met", vs_floor, floor_target,
-              vs_floor <= floor_target ? "met" : "NOT met");
-  std::printf("gradients/floor = %.2f (our fused gradient pass against OpenCV's blur + Sobel)\n",
-              find("gradients") / find("floor"));
+  const TargetCheck vs_edlines{"fieldlines/edlines", peers::ratio_in_both_orders(ours, row("edlines")), 0.4};
+  const TargetCheck vs_floor{"fieldlines/floor", peers::ratio_in_both_orders(ours, row("floor")), floor_target};
+  std::printf("\ntargets, checked on the worse order:\n");
+  for (const TargetCheck* t : {&vs_edlines, &vs_floor})
+    std::printf("  %s = %s (<= %.2f: %s)\n", t->label.c_str(), worse_text(t->ratio).c_str(), t->limit,
+                t->met() ? "met" : "NOT met");
+  const peers::RatioSummary gradients = peers::ratio_in_both_orders(row("gradients"), row("floor"));
+  std::printf("gradients/floor = %s (block %.2f, interleaved %.2f: our fused gradient pass against OpenCV's blur + "
+              "Sobel)\n",
+              worse_text(gradients).c_str(), gradients.by_order[0], gradients.by_order[1]);
 
   if (json_out) {
     nlohmann::ordered_json j{{"images", images.size()}};
     if (scale) j["scale"] = {{"width", scale->width}, {"height", scale->height}};
     j["detector_threads"] = params.threads;
+    j["rounds"] = rounds.rounds;
+    j["passes_per_round"] = rounds.passes;
+    j["seed"] = rounds.seed;
+    j["clock"] = peers::clock_name(rounds.clock);
     j["detectors"] = detectors_json;
+    j["targets"] = {{"edlines", target_json(vs_edlines)}, {"floor", target_json(vs_floor)}};
+    j["gradients_over_floor"] = ratio_json(gradients);
     write_output_file(*json_out, j.dump(2) + "\n");
     std::printf("results written to %s\n", json_out->string().c_str());
   }

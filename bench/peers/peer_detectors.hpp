@@ -1,6 +1,8 @@
 #pragma once
 // The detectors `fieldlines bench` and bench/detector_bench time against each other, each
 // behind one call that takes the same 8-bit BGR image (grey conversion included in the call).
+// A library of its own (fieldlines_peers) so both faces share one definition of every peer and
+// the robot's library never links opencv_ximgproc.
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -11,7 +13,7 @@
 #include "fieldlines/detect/classifier.hpp"
 #include "fieldlines/detect/detector.hpp"
 
-namespace fieldlines::cli {
+namespace fieldlines::peers {
 
 struct TimedDetector {
   std::string name;  // "fieldlines", "edlines", "fld", "lsd", "gradients", "floor"
@@ -28,4 +30,4 @@ struct TimedDetector {
 std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params = {},
                                                 const Thresholds& thresholds = {});
 
-}  // namespace fieldlines::cli
+}  // namespace fieldlines::peers

@@ -1,4 +1,4 @@
-#include "app/cli/peer_detectors.hpp"
+#include "bench/peers/peer_detectors.hpp"
 
 #include <memory>
 
@@ -6,7 +6,7 @@
 #include <opencv2/ximgproc/edge_drawing.hpp>
 #include <opencv2/ximgproc/fast_line_detector.hpp>
 
-namespace fieldlines::cli {
+namespace fieldlines::peers {
 namespace {
 
 // Buffers shared by the OpenCV peers: reused so no peer pays for allocation we do not.
@@ -83,4 +83,4 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
   return out;
 }
 
-}  // namespace fieldlines::cli
+}  // namespace fieldlines::peers
