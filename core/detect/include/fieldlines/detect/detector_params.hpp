@@ -92,7 +92,7 @@ const ParamSpec* find_param_spec(std::string_view name);
 // Why `value` is not valid for `spec` ("0 is outside [1, 1000]"), or nothing when it is.
 std::optional<std::string> param_error(const ParamSpec& spec, double value);
 
-// The default (DetectorParams{}) as text: "7", "0.15", "true", "5, 7, 9".
+// The default (DetectorParams{}) as text: a number, true or false, or a list "a, b, c".
 std::string param_default_text(const ParamSpec& spec);
 
 // A number as the messages and help print it: up to 6 significant digits, no trailing zeros.
