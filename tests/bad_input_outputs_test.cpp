@@ -35,6 +35,10 @@ class BadOutputs : public BadInputTest {
               "--iterations", "5", "--json", out.string()};
     if (name == "autolabel") return {"autolabel", set(), "--quiet", "-o", out.string()};
     if (name == "autolabel-csv") return {"autolabel", set(), "--quiet", "-o", path("p.json").string(), "--csv", out.string()};
+    if (name == "eval-gt") return {"eval", "--gt", set(), "--json", out.string()};
+    if (name == "calibrate") return {"calibrate", image_a(), "--quiet", "-o", out.string()};
+    if (name == "calibrate-json")
+      return {"calibrate", image_a(), "--quiet", "-o", path("c.json").string(), "--json", out.string()};
     ADD_FAILURE() << name;
     return {};
   }
@@ -86,8 +90,12 @@ TEST_F(BadOutputs, BenchJsonUnderAFile) { expect_unwritable("bench", {"--json", 
 TEST_F(BadOutputs, TrainOutputUnderAFile) { expect_unwritable("train", {"-o", "does not exist"}); }
 TEST_F(BadOutputs, EvalJsonUnderAFile) { expect_unwritable("eval", {"--json", "does not exist"}); }
 TEST_F(BadOutputs, SweepJsonUnderAFile) { expect_unwritable("sweep", {"--json", "does not exist"}); }
-TEST_F(BadOutputs, AutolabelProjectUnderAFile) { expect_unwritable("autolabel", {"cannot save"}); }
-TEST_F(BadOutputs, AutolabelCsvUnderAFile) { expect_unwritable("autolabel-csv", {"cannot save"}); }
+// Checked before the labelling, not when saving at the end.
+TEST_F(BadOutputs, AutolabelProjectUnderAFile) { expect_unwritable("autolabel", {"-o", "does not exist"}); }
+TEST_F(BadOutputs, AutolabelCsvUnderAFile) { expect_unwritable("autolabel-csv", {"--csv", "does not exist"}); }
+TEST_F(BadOutputs, EvalGroundTruthJsonUnderAFile) { expect_unwritable("eval-gt", {"--json", "does not exist"}); }
+TEST_F(BadOutputs, CalibrateOutputUnderAFile) { expect_unwritable("calibrate", {"-o", "does not exist"}); }
+TEST_F(BadOutputs, CalibrateJsonUnderAFile) { expect_unwritable("calibrate-json", {"--json", "does not exist"}); }
 TEST_F(BadOutputs, SynthFolderUnderAFile) {
   const CliRun r = run({"synth", "--scene", "ssl", "--n", "1", "--seed", "1", "--quiet", "-o", under_file("set").string()});
   EXPECT_CLI_FAILS(r, 2, under_file("set").string());

@@ -168,7 +168,9 @@ TEST(Detector, ValidatesParameters) {
       LineDetector{p};
       FAIL() << "threads = " << threads << " accepted";
     } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find("threads must be in [1, 64]"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("detector parameter threads: " + std::to_string(threads) + " is outside [1, 64]"),
+                std::string::npos)
+          << e.what();
     }
   }
   p = {};

@@ -2,10 +2,9 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
-#include "app/cli/args.hpp"
-#include "app/cli/commands.hpp"
 #include "fieldlines/data/project.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
@@ -14,6 +13,7 @@
 #include "fieldlines/data/reference_csv.hpp"
 #include "fieldlines/synth/synth.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
+#include "app/cli/subcommand.hpp"
 #include "app/cli/synth_set.hpp"
 
 namespace fieldlines::cli {
@@ -46,15 +46,13 @@ examples:
 }  // namespace
 
 int cmd_autolabel(const Args& args) {
-  const ParsedArgs a(args, {"-o", "--output", "--csv", "--thresholds", "--max-distance"}, {"--quiet", "-h", "--help"});
-  if (a.flag("-h") || a.flag("--help")) {
-    std::fputs(kHelp, stdout);
-    return 0;
-  }
+  const auto parsed = parse_or_print_help(args, {"-o", "--output", "--csv", "--thresholds", "--max-distance"}, {"--quiet"}, kHelp);
+  if (!parsed) return 0;
+  const ParsedArgs& a = *parsed;
   if (a.positionals().size() != 1) throw Error("expected one synthetic set folder DIR (see --help)");
   const fs::path dir = a.positionals().front();
-  const auto out_opt = a.has("-o") ? a.value("-o") : a.value("--output");
-  const fs::path out = out_opt ? fs::path(*out_opt) : dir / "project.json";
+  const fs::path out = output_path(a, "-o").value_or(dir / "project.json");
+  const std::optional<fs::path> csv = output_path(a, "--csv");
   ThresholdsFile file;
   if (const auto t = a.value("--thresholds")) file = load_thresholds_file(*t);
   GtMatchParams match;
@@ -90,7 +88,7 @@ int cmd_autolabel(const Args& args) {
   if (project.images.empty())
     throw Error(dir.string() + ": no image could be labelled (see the messages above); " + out.string() + " not written");
   project.save(out);
-  if (const auto csv = a.value("--csv")) write_reference_csv(*csv, rows);
+  if (csv) write_reference_csv(*csv, rows);
   if (!a.flag("--quiet"))
     std::printf("%s: %zu images, %ld marking, %ld boundary, %ld none segments\n", out.string().c_str(),
                 project.images.size(), totals[2], totals[1], totals[0]);

@@ -2,17 +2,17 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <opencv2/videoio.hpp>
 
-#include "app/cli/args.hpp"
-#include "app/cli/commands.hpp"
 #include "app/cli/image_inputs.hpp"
 #include "app/cli/labelled_data.hpp"
 #include "app/cli/output_file.hpp"
 #include "app/cli/progress.hpp"
+#include "app/cli/subcommand.hpp"
 #include "fieldlines/data/image_io.hpp"
 #include "fieldlines/data/project.hpp"
 #include "fieldlines/data/video_io.hpp"
@@ -143,25 +143,15 @@ void show_class(const char* name, const ClassCalibration& c, const ClassThreshol
 }  // namespace
 
 int cmd_calibrate(const Args& args) {
-  const ParsedArgs a(args, {"-o", "--output", "--json", "--every", "--thresholds"}, {"--quiet", "-h", "--help"});
-  if (a.flag("-h") || a.flag("--help")) {
-    std::fputs(kHelp, stdout);
-    return 0;
-  }
+  const auto parsed = parse_or_print_help(args, {"-o", "--output", "--json", "--every", "--thresholds"}, {"--quiet"}, kHelp);
+  if (!parsed) return 0;
+  const ParsedArgs& a = *parsed;
   if (a.positionals().empty()) throw Error("expected at least one PATH (see --help)");
-  const auto out_opt = a.has("-o") ? a.value("-o") : a.value("--output");
-  if (!out_opt) throw Error("-o THRESHOLDS is required: the thresholds file to write");
-  const fs::path output = *out_opt;
-  const std::optional<std::string> report = a.value("--json");
+  // Before any long work: a bad output path fails now, and never over an input.
+  const fs::path output = required_output_path(a, "-o", "THRESHOLDS", a.positionals());
+  const std::optional<fs::path> report = output_path(a, "--json", a.positionals());
   const int every = a.int_or("--every", 10, 1, 1'000'000);
   const bool quiet = a.flag("--quiet");
-  // Before any long work: a bad output path fails now, and never over an input.
-  check_output_path("-o", output);
-  check_not_an_input("-o", output, a.positionals());
-  if (report) {
-    check_output_path("--json", *report);
-    check_not_an_input("--json", *report, a.positionals());
-  }
   ThresholdsFile config;
   if (const auto t = a.value("--thresholds")) config = load_thresholds_file(*t);
 

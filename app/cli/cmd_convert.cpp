@@ -4,14 +4,12 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/args.hpp"
 #include "fieldlines/data/image_io.hpp"
-#include "app/cli/commands.hpp"
 #include "fieldlines/data/data_file.hpp"
 #include "fieldlines/data/project.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/data/reference_csv.hpp"
-#include "app/cli/output_file.hpp"
+#include "app/cli/subcommand.hpp"
 
 namespace fieldlines::cli {
 namespace {
@@ -60,27 +58,20 @@ std::string count(std::size_t n, const char* noun) {
 }  // namespace
 
 int cmd_convert(const Args& args) {
-  const ParsedArgs a(args, {"-o", "--output"}, {"--quiet", "-h", "--help"});
-  if (a.flag("-h") || a.flag("--help")) {
-    std::fputs(kHelp, stdout);
-    return 0;
-  }
+  const auto parsed = parse_or_print_help(args, {"-o", "--output"}, {"--quiet"}, kHelp);
+  if (!parsed) return 0;
+  const ParsedArgs& a = *parsed;
   if (a.positionals().empty()) throw Error("no DATA given (see --help)");
   if (a.positionals().size() > 1)
     throw Error("expected one DATA file, got " + std::to_string(a.positionals().size()) + " (see --help)");
   const std::string data = a.positionals().front();
-  const auto out_opt = a.has("-o") ? a.value("-o") : a.value("--output");
-  if (!out_opt) throw Error("missing -o OUT (see --help)");
-  const fs::path out = *out_opt;
+  // All output checks before reading DATA: the folder exists, OUT is not DATA, and an existing
+  // OUT is only replaced when it is a file of the same kind (never, say, a thresholds file).
+  const fs::path out = required_output_path(a, "-o", "OUT", {data});
   const std::string ext = lower_extension(out);
   if (ext != ".csv" && ext != ".json")
     throw Error("-o " + out.string() + ": expected a name ending in .csv (reference CSV) or .json (project)");
   const bool to_csv = ext == ".csv";
-
-  // All output checks before reading DATA: the folder exists, OUT is not DATA, and an existing
-  // OUT is only replaced when it is a file of the same kind (never, say, a thresholds file).
-  check_output_path("-o", out);
-  check_not_an_input("-o", out, {data});
   if (fs::exists(out)) {
     if (to_csv) {
       if (!looks_like_reference_csv(out))

@@ -11,9 +11,8 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "app/cli/args.hpp"
-#include "app/cli/commands.hpp"
 #include "app/cli/detections_json.hpp"
+#include "app/cli/detector_params_help.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/data/image_io.hpp"
@@ -24,6 +23,7 @@
 #include "app/cli/output_file.hpp"
 #include "app/cli/parallel_batch.hpp"
 #include "app/cli/progress.hpp"
+#include "app/cli/subcommand.hpp"
 #include "app/cli/video_stream.hpp"
 
 namespace fieldlines::cli {
@@ -39,8 +39,8 @@ file-name order), measures their colour gradients and classifies them as field m
 field boundary or none. Prints one summary line per image on stdout.
 
 options:
-  --thresholds FILE detector parameters and classification thresholds from a thresholds
-                    file (as `fieldlines train` writes it); default: the reference's
+  --thresholds FILE detector parameters (listed below) and classification thresholds from a
+                    thresholds file (as `fieldlines train` writes it); default: the reference's
   --json OUT        write every segment to OUT (schema: docs/detect_and_bench.md)
   --csv OUT         write every segment in the reference annotation CSV format
                     (img_path = file name, B,G,R channels, reference y sign, label columns)
@@ -60,6 +60,9 @@ A bad file (missing, corrupt, empty, unsupported pixel type, too large) is repor
 stderr and skipped; the batch goes on and the exit code is 1 at the end.
 Exit codes: 0 all images processed, 1 some failed, 2 usage or fatal error.
 
+)";
+
+constexpr const char* kExamples = R"(
 examples:
   fieldlines detect frame.png
   fieldlines detect --json out/lines.json --draw out/overlays ../shared/data/elsed-ssl/images
@@ -69,9 +72,11 @@ examples:
   fieldlines detect --thresholds robot.json --video /dev/video0 --max-frames 600
 )";
 
+// The options, the detector parameters a --thresholds file sets, the examples.
+std::string help_text() { return kHelp + detector_params_help() + kExamples; }
+
 struct Options {
-  bool help = false;
-  std::optional<fs::path> thresholds, json, csv, draw;
+  std::optional<fs::path> thresholds, json, csv, draw;  // json and csv checked as output paths
   int threads = 1;
   bool quiet = false;
   std::vector<std::string> paths;
@@ -80,20 +85,18 @@ struct Options {
   long max_frames = -1;
 };
 
-Options parse(const Args& args) {
-  const ParsedArgs a(args, {"--thresholds", "--json", "--csv", "--draw", "--threads", "--video", "--video-out", "--max-frames"},
-                     {"--quiet", "--help", "-h"});
+// Output files are checked here, before a possibly long batch, not after it.
+Options parse(const ParsedArgs& a) {
   Options o;
-  o.help = a.flag("--help") || a.flag("-h");
   if (const auto v = a.value("--thresholds")) o.thresholds = *v;
-  if (const auto v = a.value("--json")) o.json = *v;
-  if (const auto v = a.value("--csv")) o.csv = *v;
+  o.json = output_path(a, "--json");
+  o.csv = output_path(a, "--csv");
   if (const auto v = a.value("--draw")) o.draw = *v;
   o.threads = a.int_or("--threads", 1, 1, 256);
   o.quiet = a.flag("--quiet");
   o.paths = a.positionals();
   o.video = a.value("--video");
-  if (const auto v = a.value("--video-out")) o.video_out = *v;
+  o.video_out = output_path(a, "--video-out");
   o.max_frames = a.int_or("--max-frames", -1, 1, 1 << 30);
   return o;
 }
@@ -145,24 +148,20 @@ std::string summary_line(const ImageDetections& d) {
 }  // namespace
 
 int cmd_detect(const Args& args) {
-  const Options opt = parse(args);
-  if (opt.help) {
-    std::fputs(kHelp, stdout);
-    return 0;
-  }
+  const auto parsed = parse_or_print_help(
+      args, {"--thresholds", "--json", "--csv", "--draw", "--threads", "--video", "--video-out", "--max-frames"},
+      {"--quiet"}, help_text());
+  if (!parsed) return 0;
+  const Options opt = parse(*parsed);
   if (opt.video) {
     if (!opt.paths.empty() || opt.json || opt.csv || opt.draw)
       throw Error("--video takes no PATH, --json, --csv or --draw (use --video-out for overlays)");
-    if (opt.video_out) check_output_path("--video-out", *opt.video_out);
     ThresholdsFile video_config;
     if (opt.thresholds) video_config = load_thresholds_file(*opt.thresholds);
     return run_video_detection({*opt.video, opt.video_out, opt.max_frames, opt.quiet}, video_config);
   }
   if (opt.video_out || opt.max_frames >= 0) throw Error("--video-out and --max-frames go with --video");
   if (opt.paths.empty()) throw Error("no PATH given: name at least one image or folder (see --help)");
-  // Output locations are checked before a possibly long batch, not after it.
-  if (opt.json) check_output_path("--json", *opt.json);
-  if (opt.csv) check_output_path("--csv", *opt.csv);
   if (opt.draw) {
     std::error_code ec;
     fs::create_directories(*opt.draw, ec);

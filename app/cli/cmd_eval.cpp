@@ -1,14 +1,12 @@
 // `fieldlines eval`: precision/recall of a thresholds file on labelled data.
 #include <cstdio>
 
-#include "app/cli/args.hpp"
-#include "app/cli/commands.hpp"
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/train/metrics.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
 #include "app/cli/labelled_data.hpp"
-#include "app/cli/output_file.hpp"
+#include "app/cli/subcommand.hpp"
 #include "app/cli/training_report.hpp"
 
 namespace fieldlines::cli {
@@ -48,21 +46,16 @@ int cmd_eval(const Args& args) {
   if (wants_ground_truth(args)) {
     return cmd_eval_gt(args);
   }
-  const ParsedArgs a(args, {"--thresholds", "--json"}, {"--per-image", "-h", "--help"});
-  if (a.flag("-h") || a.flag("--help")) {
-    std::printf("%s", kHelp);
-    return 0;
-  }
+  const auto parsed = parse_or_print_help(args, {"--thresholds", "--json"}, {"--per-image"}, kHelp);
+  if (!parsed) return 0;
+  const ParsedArgs& a = *parsed;
   const auto thresholds_path = a.value("--thresholds");
   if (!thresholds_path) throw Error("missing --thresholds FILE (see --help)");
   if (a.positionals().empty()) throw Error("no DATA given (see --help)");
   // Checked before the work, which can be long: an unwritable --json would only fail at the end.
-  if (const auto json_path = a.value("--json")) {
-    check_output_path("--json", *json_path);
-    std::vector<std::string> inputs = a.positionals();
-    inputs.push_back(*thresholds_path);
-    check_not_an_input("--json", *json_path, inputs);
-  }
+  std::vector<std::string> inputs = a.positionals();
+  inputs.push_back(*thresholds_path);
+  const auto json_path = output_path(a, "--json", inputs);
   const ThresholdsFile file = load_thresholds_file(*thresholds_path);
 
   nlohmann::json out = {{"thresholds", *thresholds_path}, {"files", nlohmann::json::array()}};
@@ -82,7 +75,7 @@ int cmd_eval(const Args& args) {
   }
   if (a.positionals().size() > 1) print_counts(stdout, "all", total);
   out["total"] = counts_json(total);
-  if (const auto json_path = a.value("--json")) write_file_atomically(*json_path, out.dump(2) + "\n");
+  if (json_path) write_file_atomically(*json_path, out.dump(2) + "\n");
   return 0;
 }
 

@@ -9,8 +9,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/cli/args.hpp"
-#include "app/cli/commands.hpp"
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
@@ -18,6 +16,7 @@
 #include "fieldlines/data/image_io.hpp"
 #include "fieldlines/synth/synth.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
+#include "app/cli/subcommand.hpp"
 #include "app/cli/synth_set.hpp"
 
 namespace fieldlines::cli {
@@ -108,18 +107,15 @@ std::vector<SynthSetImage> list_synth_set(const fs::path& dir) {
 }
 
 int cmd_eval_gt(const Args& args) {
-  // Help first: in `eval --gt --help` the parser would take --help as the DIR.
-  for (const std::string& arg : args) {
-    if (arg == "-h" || arg == "--help") {
-      std::fputs(kHelp, stdout);
-      return 0;
-    }
-  }
-  const ParsedArgs a(args, {"--gt", "--thresholds", "--max-distance", "--min-width", "--json"}, {"--markdown"});
+  const auto parsed =
+      parse_or_print_help(args, {"--gt", "--thresholds", "--max-distance", "--min-width", "--json"}, {"--markdown"}, kHelp);
+  if (!parsed) return 0;
+  const ParsedArgs& a = *parsed;
   std::vector<fs::path> dirs;
   if (const auto gt = a.value("--gt")) dirs.emplace_back(*gt);
   for (const std::string& p : a.positionals()) dirs.emplace_back(p);
   if (dirs.empty()) throw Error("--gt DIR is required (see fieldlines eval --gt --help)");
+  const auto json_path = output_path(a, "--json");  // checked before the detection runs
   ThresholdsFile file;
   if (const auto t = a.value("--thresholds")) file = load_thresholds_file(*t);
   GtMatchParams match;
@@ -167,7 +163,7 @@ int cmd_eval_gt(const Args& args) {
   }
   print_row(markdown, "all", "all", total);
   out["total"] = to_json(total);
-  if (const auto json_path = a.value("--json")) write_file_atomically(*json_path, out.dump(2) + "\n");
+  if (json_path) write_file_atomically(*json_path, out.dump(2) + "\n");
   return failed > 0 ? 1 : 0;
 }
 

@@ -6,13 +6,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/cli/args.hpp"
-#include "app/cli/commands.hpp"
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/train/sweep.hpp"
 #include "app/cli/labelled_data.hpp"
-#include "app/cli/output_file.hpp"
+#include "app/cli/subcommand.hpp"
 #include "app/cli/progress.hpp"
 #include "app/cli/training_options.hpp"
 
@@ -34,6 +32,12 @@ options:
   --quiet              no progress on stderr
 )";
 
+constexpr const char* kExamples = R"(
+examples:
+  fieldlines sweep D1_ssl_natural_light.csv --protocol paper
+  fieldlines sweep D1_ssl_natural_light.csv D4_humanoid_kid.csv --fractions 0.2,0.4 --seeds 5 --json table3.json
+)";
+
 std::vector<double> parse_fractions(const std::string& text) {
   std::vector<double> out;
   std::stringstream ss(text);
@@ -48,21 +52,12 @@ std::vector<double> parse_fractions(const std::string& text) {
 int cmd_sweep(const Args& args) {
   std::set<std::string> values = training_value_options();
   values.insert({"--fractions", "--seeds", "--split", "--json"});
-  const ParsedArgs a(args, values, {"-h", "--help", "--quiet"});
-  if (a.flag("-h") || a.flag("--help")) {
-    std::printf("%s%s%s", kHelp, kTrainingOptionsHelp, R"(
-examples:
-  fieldlines sweep D1_ssl_natural_light.csv --protocol paper
-  fieldlines sweep D1_ssl_natural_light.csv D4_humanoid_kid.csv --fractions 0.2,0.4 --seeds 5 --json table3.json
-)");
-    return 0;
-  }
+  const auto parsed = parse_or_print_help(args, values, {"--quiet"}, kHelp + training_options_help() + kExamples);
+  if (!parsed) return 0;
+  const ParsedArgs& a = *parsed;
   if (a.positionals().empty()) throw Error("no DATA given (see --help)");
   // Checked before the work, which can be long: an unwritable --json would only fail at the end.
-  if (const auto json_path = a.value("--json")) {
-    check_output_path("--json", *json_path);
-    check_not_an_input("--json", *json_path, a.positionals());
-  }
+  const auto json_path = output_path(a, "--json", a.positionals());
   SweepParams sp;
   if (const auto v = a.value("--fractions")) sp.fractions = parse_fractions(*v);
   sp.seeds = a.int_or("--seeds", 10, 1, 100000);
@@ -118,7 +113,7 @@ examples:
     }
     std::printf("\n");
   }
-  if (const auto out = a.value("--json")) write_file_atomically(*out, json.dump(2) + "\n");
+  if (json_path) write_file_atomically(*json_path, json.dump(2) + "\n");
   return 0;
 }
 

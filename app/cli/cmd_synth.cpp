@@ -5,8 +5,7 @@
 #include <tuple>
 #include <vector>
 
-#include "app/cli/args.hpp"
-#include "app/cli/commands.hpp"
+#include "app/cli/subcommand.hpp"
 #include "fieldlines/synth/demo.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/synth/synth.hpp"
@@ -71,14 +70,12 @@ std::vector<synth::Condition> parse_conditions(const std::string& text) {
 }  // namespace
 
 int cmd_synth(const Args& args) {
-  const ParsedArgs a(args,
+  const auto parsed = parse_or_print_help(args,
                      {"--scene", "--condition", "--line-width", "--n", "--seed", "--first", "-o", "--output",
                       "--height", "--pitch", "--roll"},
-                     {"--no-effects", "--demo", "--quiet", "--help", "-h"});
-  if (a.flag("--help") || a.flag("-h")) {
-    std::fputs(kHelp, stdout);
-    return 0;
-  }
+                     {"--no-effects", "--demo", "--quiet"}, kHelp);
+  if (!parsed) return 0;
+  const ParsedArgs& a = *parsed;
   if (!a.positionals().empty()) throw Error("unexpected argument '" + a.positionals().front() + "'");
   if (a.flag("--demo")) {
     DemoParams demo;

@@ -8,15 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/args.hpp"
-#include "app/cli/commands.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/data/split_spec.hpp"
 #include "fieldlines/train/splits.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
 #include "fieldlines/train/training.hpp"
 #include "app/cli/labelled_data.hpp"
-#include "app/cli/output_file.hpp"
+#include "app/cli/subcommand.hpp"
 #include "app/cli/progress.hpp"
 #include "app/cli/training_options.hpp"
 #include "app/cli/training_report.hpp"
@@ -94,22 +92,20 @@ CrossValidation cross_validate(const LabelledSet& all, const Thresholds& start, 
 int cmd_train(const Args& args) {
   std::set<std::string> values = training_value_options();
   values.insert({"-o", "--output", "--split", "--train-fraction", "--seed", "--folds"});
-  const ParsedArgs a(args, values, {"-h", "--help", "--quiet"});
-  if (a.flag("-h") || a.flag("--help")) {
-    std::printf("%s%s  --quiet              nothing on stderr but errors\n%s", kHelp, kTrainingOptionsHelp, kExamples);
-    return 0;
-  }
-  const auto output = a.has("-o") ? a.value("-o") : a.value("--output");
-  if (!output) throw Error("missing -o FILE (see --help)");
-  if (a.positionals().empty()) throw Error("no DATA given (see --help)");
+  const auto parsed = parse_or_print_help(
+      args, values, {"--quiet"},
+      kHelp + training_options_help() + "  --quiet              nothing on stderr but errors\n" + kExamples);
+  if (!parsed) return 0;
+  const ParsedArgs& a = *parsed;
   // Checked before a possibly long training: the folder must exist, and an existing file is only
   // replaced when it is a thresholds file (never the labels: `-o project.json` would lose them).
-  check_output_path("-o", *output);
-  if (std::filesystem::exists(*output)) {
+  const std::filesystem::path output = required_output_path(a, "-o", "FILE");
+  if (a.positionals().empty()) throw Error("no DATA given (see --help)");
+  if (std::filesystem::exists(output)) {
     try {
-      (void)load_thresholds_file(*output);
+      (void)load_thresholds_file(output);
     } catch (const Error& e) {
-      throw Error(std::string("refusing to overwrite -o ") + output->c_str() + ", it is not a thresholds file we can read (" +
+      throw Error("refusing to overwrite -o " + output.string() + ", it is not a thresholds file we can read (" +
                   e.what() + ")");
     }
   }
@@ -203,7 +199,7 @@ int cmd_train(const Args& args) {
   p["train"] = counts_json(train_counts);
   p["test"] = test_counts ? counts_json(*test_counts) : nlohmann::json(nullptr);
   if (cv) p["cross_validation"] = cross_validation_json(*cv);
-  save_thresholds_file(*output, file);
+  save_thresholds_file(output, file);
 
   const auto show = [](const char* name, const ColourClass& c) {
     std::printf("%-9s min projection %8.3f  max angle %7.3f deg  min length %8.3f\n", name,
@@ -215,7 +211,7 @@ int cmd_train(const Args& args) {
   print_counts_header(stdout, 20);
   print_counts(stdout, "train", train_counts);
   if (test_counts) print_counts(stdout, "test", *test_counts);
-  std::printf("wrote %s\n", output->c_str());
+  std::printf("wrote %s\n", output.c_str());
   return 0;
 }
 

@@ -1,7 +1,12 @@
 // Thresholds tab: hand-tune each class's thresholds (re-classifies at once from cached features)
 // and the detector's main parameters (used by the next background detection).
+#include <algorithm>
+#include <string>
+#include <variant>
+
 #include <imgui.h>
 
+#include "fieldlines/detect/detector_params.hpp"
 #include "gui/model/figures.hpp"
 #include "gui/panels/panels.hpp"
 
@@ -21,6 +26,25 @@ bool class_sliders(const char* name, ClassThresholds& t, bool& released) {
   released |= ImGui::IsItemDeactivatedAfterEdit();
   ImGui::PopID();
   return changed;
+}
+
+// One detector parameter on a slider over its spec's span, its meaning and range as the tooltip.
+// Returns whether the slider was released after an edit.
+bool detector_slider(const ParamSpec& spec, DetectorParams& p) {
+  std::string label(spec.name);
+  std::replace(label.begin(), label.end(), '_', ' ');
+  if (!spec.unit.empty()) label += " (" + std::string(spec.unit) + ")";
+  const auto lo = static_cast<float>(spec.slider.lo), hi = static_cast<float>(spec.slider.hi);
+  if (const auto* member = std::get_if<int DetectorParams::*>(&spec.member)) {
+    ImGui::SliderInt(label.c_str(), &(p.*(*member)), static_cast<int>(lo), static_cast<int>(hi));
+  } else if (const auto* real = std::get_if<double DetectorParams::*>(&spec.member)) {
+    float v = static_cast<float>(p.*(*real));
+    if (ImGui::SliderFloat(label.c_str(), &v, lo, hi)) p.*(*real) = v;
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("%.*s\nvalid range %s", static_cast<int>(spec.help.size()), spec.help.data(),
+                      spec.range.to_string().c_str());
+  return ImGui::IsItemDeactivatedAfterEdit();
 }
 
 void counts_line(const char* name, const ClassCounts& c) {
@@ -62,18 +86,8 @@ void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/
   ImGui::TextUnformatted("Detector (applies to the next detection)");
   DetectorParams p = controller.detector_params();
   released = false;
-  ImGui::SliderInt("gradient threshold", &p.gradient_threshold, 1, 255);
-  released |= ImGui::IsItemDeactivatedAfterEdit();
-  ImGui::SliderInt("anchor threshold", &p.anchor_threshold, 0, 64);
-  released |= ImGui::IsItemDeactivatedAfterEdit();
-  ImGui::SliderInt("min line length", &p.min_line_length, 5, 200);
-  released |= ImGui::IsItemDeactivatedAfterEdit();
-  float sigma = static_cast<float>(p.gaussian_sigma);
-  if (ImGui::SliderFloat("gaussian sigma", &sigma, 0.1f, 5)) p.gaussian_sigma = sigma;
-  released |= ImGui::IsItemDeactivatedAfterEdit();
-  float validation = static_cast<float>(p.validation_threshold);
-  if (ImGui::SliderFloat("validation (rad)", &validation, 0.01f, 1)) p.validation_threshold = validation;
-  released |= ImGui::IsItemDeactivatedAfterEdit();
+  for (const ParamSpec& spec : kDetectorParamSpecs)
+    if (!spec.slider.empty()) released |= detector_slider(spec, p);
   controller.set_detector_params(p);
   if (released) controller.flush();
   studio::DetectionJob& job = controller.detection();

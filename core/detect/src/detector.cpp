@@ -9,26 +9,6 @@
 
 namespace fieldlines {
 
-void validate(const DetectorParams& p) {
-  auto require = [](bool ok, const std::string& what) {
-    if (!ok) throw Error("detector parameter " + what);
-  };
-  require(p.gaussian_kernel < 3 || (p.gaussian_kernel % 2 == 1 && p.gaussian_kernel <= 31),
-          "gaussian_kernel must be odd and at most 31 (or < 3 to disable smoothing)");
-  require(p.gaussian_sigma > 0 && p.gaussian_sigma <= 20, "gaussian_sigma must be in (0, 20]");
-  require(p.gradient_threshold >= 0 && p.gradient_threshold <= 2040, "gradient_threshold must be in [0, 2040]");
-  require(p.anchor_threshold >= 0 && p.anchor_threshold <= 255, "anchor_threshold must be in [0, 255]");
-  require(p.scan_interval >= 1 && p.scan_interval <= 1000, "scan_interval must be in [1, 1000]");
-  require(p.min_line_length >= 3 && p.min_line_length <= 10000, "min_line_length must be in [3, 10000]");
-  require(p.line_fit_error > 0 && p.line_fit_error <= 100, "line_fit_error must be in (0, 100]");
-  require(p.px_to_segment_dist > 0 && p.px_to_segment_dist <= 100, "px_to_segment_dist must be in (0, 100]");
-  require(p.validation_threshold > 0 && p.validation_threshold <= 1.5708,
-          "validation_threshold must be in (0, pi/2] radians");
-  require(p.threads >= 1 && p.threads <= 64, "threads must be in [1, 64]");
-  for (const int s : p.junction_sizes)
-    require(s >= 1 && s <= 100, "junction_sizes must each be in [1, 100]");
-}
-
 // Hidden like the engine it holds (see elsed/line_model.hpp).
 struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   ElsedEngine engine;

@@ -1,6 +1,7 @@
 #include "fieldlines/detect/params_json.hpp"
 
 #include <cmath>
+#include <type_traits>
 
 #include "fieldlines/detect/error.hpp"
 
@@ -21,19 +22,8 @@ double number(const json& j, const char* name, const std::string& where, double 
   if (!v.is_number()) throw Error(where + "." + name + ": expected a number");
   const double d = v.get<double>();
   if (!std::isfinite(d) || d < lo || d > hi)
-    throw Error(where + "." + name + ": " + std::to_string(d) + " is outside [" + std::to_string(lo) +
-                ", " + std::to_string(hi) + "]");
+    throw Error(where + "." + name + ": " + format_param_number(d) + " is outside " + ParamRange{lo, hi}.to_string());
   return d;
-}
-
-int integer(const json& j, const char* name, const std::string& where, int lo, int hi) {
-  const json& v = field(j, name, where);
-  if (!v.is_number_integer()) throw Error(where + "." + name + ": expected an integer");
-  const auto i = v.get<long long>();
-  if (i < lo || i > hi)
-    throw Error(where + "." + name + ": " + std::to_string(i) + " is outside [" + std::to_string(lo) + ", " +
-                std::to_string(hi) + "]");
-  return static_cast<int>(i);
 }
 
 bool boolean(const json& j, const char* name, const std::string& where) {
@@ -79,49 +69,51 @@ ColourClass class_from_json(const json& j, const std::string& where) {
 }  // namespace
 
 json detector_params_to_json(const DetectorParams& p) {
-  return {{"gaussian_kernel", p.gaussian_kernel},
-          {"gaussian_sigma", p.gaussian_sigma},
-          {"gradient_threshold", p.gradient_threshold},
-          {"anchor_threshold", p.anchor_threshold},
-          {"scan_interval", p.scan_interval},
-          {"min_line_length", p.min_line_length},
-          {"line_fit_error", p.line_fit_error},
-          {"px_to_segment_dist", p.px_to_segment_dist},
-          {"validation_threshold", p.validation_threshold},
-          {"validate", p.validate},
-          {"treat_junctions", p.treat_junctions},
-          {"junction_sizes", p.junction_sizes}};
+  json j = json::object();
+  for (const ParamSpec& spec : kDetectorParamSpecs)
+    if (spec.in_files) std::visit([&](auto member) { j[std::string(spec.name)] = p.*member; }, spec.member);
+  return j;
 }
 
 DetectorParams detector_params_from_json(const json& j, const std::string& where) {
   if (!j.is_object()) throw Error(where + ": expected an object");
   DetectorParams p;
-  const auto has = [&](const char* n) { return j.contains(n); };
-  constexpr int kBig = 1 << 20;
-  if (has("gaussian_kernel")) p.gaussian_kernel = integer(j, "gaussian_kernel", where, 0, 99);
-  if (has("gaussian_sigma")) p.gaussian_sigma = number(j, "gaussian_sigma", where, 0, 100);
-  if (has("gradient_threshold")) p.gradient_threshold = integer(j, "gradient_threshold", where, 0, kBig);
-  if (has("anchor_threshold")) p.anchor_threshold = integer(j, "anchor_threshold", where, 0, kBig);
-  if (has("scan_interval")) p.scan_interval = integer(j, "scan_interval", where, 1, kBig);
-  if (has("min_line_length")) p.min_line_length = integer(j, "min_line_length", where, 0, kBig);
-  if (has("line_fit_error")) p.line_fit_error = number(j, "line_fit_error", where, 0, 1e6);
-  if (has("px_to_segment_dist")) p.px_to_segment_dist = number(j, "px_to_segment_dist", where, 0, 1e6);
-  if (has("validation_threshold")) p.validation_threshold = number(j, "validation_threshold", where, 0, 10);
-  if (has("validate")) p.validate = boolean(j, "validate", where);
-  if (has("treat_junctions")) p.treat_junctions = boolean(j, "treat_junctions", where);
-  if (has("junction_sizes")) {
-    const json& v = j["junction_sizes"];
-    if (!v.is_array()) throw Error(where + ".junction_sizes: expected an array of integers");
-    p.junction_sizes.clear();
-    for (const json& e : v) {
-      if (!e.is_number_integer()) throw Error(where + ".junction_sizes: expected integers");
-      p.junction_sizes.push_back(e.get<int>());
-    }
-  }
-  try {
-    validate(p);
-  } catch (const Error& e) {
-    throw Error(where + ": " + e.what());
+  for (const ParamSpec& spec : kDetectorParamSpecs) {
+    const std::string key(spec.name);
+    const auto it = j.find(key);
+    if (!spec.in_files || it == j.end()) continue;  // missing fields keep their defaults
+    const std::string field = where + "." + key;
+    // Range errors name the field, the value and the range, from the same table validate() reads.
+    const auto in_range = [&](const std::string& name, double v) {
+      if (const auto why = param_error(spec, v)) throw Error(name + ": " + *why);
+    };
+    const auto integer = [&](const json& v, const std::string& name) {
+      if (!v.is_number_integer()) throw Error(name + ": expected an integer");
+      const auto i = v.get<long long>();
+      in_range(name, static_cast<double>(i));
+      return static_cast<int>(i);
+    };
+    std::visit(
+        [&](auto member) {
+          auto& out = p.*member;
+          using T = std::decay_t<decltype(out)>;
+          if constexpr (std::is_same_v<T, bool>) {
+            if (!it->is_boolean()) throw Error(field + ": expected true or false");
+            out = it->template get<bool>();
+          } else if constexpr (std::is_same_v<T, int>) {
+            out = integer(*it, field);
+          } else if constexpr (std::is_same_v<T, double>) {
+            if (!it->is_number()) throw Error(field + ": expected a number");
+            out = it->template get<double>();
+            in_range(field, out);
+          } else {
+            if (!it->is_array()) throw Error(field + ": expected an array of integers");
+            out.clear();
+            for (std::size_t i = 0; i < it->size(); ++i)
+              out.push_back(integer((*it)[i], field + "[" + std::to_string(i) + "]"));
+          }
+        },
+        spec.member);
   }
   return p;
 }

@@ -12,9 +12,10 @@
 
 namespace fieldlines::elsed {
 
+// DetectorParams::validation_threshold and DetectorParams::validate.
 struct ValidationParams {
-  double max_angle_error = 0.15;  // radians between a pixel's gradient and the segment normal
-  bool validate = true;           // false: keep every segment, saliency = Euclidean length
+  double max_angle_error = 0;  // radians between a pixel's gradient and the segment normal
+  bool validate = false;       // false: keep every segment, saliency = Euclidean length
 };
 
 // Checks a drawn segment: it is kept when more of its inlier pixels (ends trimmed) have a

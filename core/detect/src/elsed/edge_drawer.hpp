@@ -17,12 +17,13 @@
 
 namespace fieldlines::elsed {
 
+// The first five are DetectorParams' fields of the same names (ElsedEngine copies them in).
 struct DrawerParams {
-  double line_fit_error = 0.2;
-  double px_to_segment_dist = 1.5;
-  int min_line_length = 40;
-  bool treat_junctions = true;
-  std::vector<int> junction_sizes{5, 7, 9};
+  double line_fit_error = 0;
+  double px_to_segment_dist = 0;
+  int min_line_length = 0;
+  bool treat_junctions = false;
+  std::vector<int> junction_sizes;
   double junction_eigen_ratio = 10;         // dominant / minor singular value of the tensor
   double junction_max_angle = 0.174532925;  // 10 degrees, tensor orientation vs the line normal
 };

@@ -12,36 +12,14 @@
 #include <opencv2/core/mat.hpp>
 
 #include "fieldlines/detect/classifier.hpp"
+#include "fieldlines/detect/detector_params.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
 
-struct DetectorParams {
-  // Defaults are the configuration the method's authors ran (reference/README.md).
-  int gaussian_kernel = 7;           // odd kernel size; < 3 disables smoothing
-  double gaussian_sigma = 1.0;
-  int gradient_threshold = 30;       // L1 Sobel magnitude below this is no edge
-  int anchor_threshold = 8;          // anchor must exceed its neighbours by this much
-  int scan_interval = 10;            // anchors are looked for every k-th row and column
-  int min_line_length = 40;          // pixels before a line is fitted
-  double line_fit_error = 0.2;       // max mean squared fit error to accept a line
-  double px_to_segment_dist = 1.5;   // max distance of an inlier pixel to the line
-  double validation_threshold = 0.15;// max gradient-orientation error (rad) of a valid pixel
-  bool validate = true;              // false: keep every drawn segment, saliency = length
-  bool treat_junctions = true;       // jump over discontinuities along the line
-  std::vector<int> junction_sizes{5, 7, 9};
-  // Threads for the gradient pass, which then runs in row bands (frames too short for bands of
-  // a useful height keep one). Speed only: the results are the same bits for any count, so it
-  // is not written into thresholds or project files. Workers start on the first detect.
-  int threads = 1;
-  bool operator==(const DetectorParams&) const = default;
-};
-
-// Validates ranges; throws fieldlines::Error naming the bad field.
-void validate(const DetectorParams& params);
-
 class LineDetector {
  public:
+  // Throws fieldlines::Error when `params` fail validate() (detector_params.hpp).
   explicit LineDetector(DetectorParams params = {}, Thresholds thresholds = {});
   ~LineDetector();
   LineDetector(LineDetector&&) noexcept;

@@ -6,12 +6,13 @@
 #include <nlohmann/json.hpp>
 
 #include "fieldlines/detect/classifier.hpp"
-#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/detector_params.hpp"
 
 namespace fieldlines {
 
 nlohmann::json detector_params_to_json(const DetectorParams& p);
-// Missing fields keep their defaults; present ones must have the right type and range.
+// Missing fields keep their defaults; present ones must have the right type and the range of
+// kDetectorParamSpecs. Keys the table does not name are ignored.
 DetectorParams detector_params_from_json(const nlohmann::json& j, const std::string& where);
 
 // {"gradient_mode", "reference_pi", "classes": {"boundary": {...}, "marking": {...}}}, each class

@@ -1,5 +1,6 @@
 #pragma once
 // Named training protocols: the paper's (to reproduce its Table 3) and ours (the default).
+#include <string>
 #include <string_view>
 
 #include "fieldlines/train/splits.hpp"
@@ -16,10 +17,15 @@ struct ProtocolSpec {
   SplitMode split = SplitMode::ByImage;
 };
 
-// Paper: row split; PSO 100 particles x 10 iterations, inertia 0.1, c1 = c2 = 0.5; reference
-// bounds; TP - FP on the marking class; no polish.
-// Ours: image split; PSO 100 x 100, inertia 0.7, c1 = c2 = 1.5; exact polish; TP - 1.5 FP on
-// the marking class; reference bounds except min length 0-300 (see docs/training.md for why).
+// What each protocol sets is defined once, in protocol_spec() (protocols.cpp says why);
+// protocol_summary() states it for help texts and panels. Paper: the paper's settings, to
+// reproduce its Table 3. Ours: a swarm that converges, the exact polish, an image split and a
+// costlier false positive (see docs/training.md).
 ProtocolSpec protocol_spec(Protocol p);
+
+// One line from protocol_spec(p): "<split> split; PSO <n> particles x <k> iterations, inertia
+// <w>, c1 <c1>, c2 <c2>; exact polish|no polish; objective <name> on <class>; search box
+// projection <lo>:<hi>, angle <lo>:<hi> deg, length <lo>:<hi>".
+std::string protocol_summary(Protocol p);
 
 }  // namespace fieldlines

@@ -1,0 +1,105 @@
+#pragma once
+// The detector's parameters and their one description. DetectorParams holds the defaults;
+// kDetectorParamSpecs names every field with its valid range, unit and meaning. The JSON reader
+// and writer, validate(), the CLI's help and the studio's sliders all read that table, so a
+// range or a name is written here and nowhere else.
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace fieldlines {
+
+struct DetectorParams {
+  // The configuration the method's authors ran (reference/README.md). What each field means,
+  // its unit and its valid range: kDetectorParamSpecs below.
+  int gaussian_kernel = 7;
+  double gaussian_sigma = 1.0;
+  int gradient_threshold = 30;
+  int anchor_threshold = 8;
+  int scan_interval = 10;
+  int min_line_length = 40;
+  double line_fit_error = 0.2;
+  double px_to_segment_dist = 1.5;
+  double validation_threshold = 0.15;
+  bool validate = true;
+  bool treat_junctions = true;
+  std::vector<int> junction_sizes{5, 7, 9};
+  // The gradient pass then runs in row bands (frames too short for bands of a useful height
+  // keep one). Speed only: the results are the same bits for any count, so it is not written
+  // into thresholds or project files. Workers start on the first detect.
+  int threads = 1;
+  bool operator==(const DetectorParams&) const = default;
+};
+
+// [lo, hi], or (lo, hi] when lo_open. Empty (lo == hi, closed) means "no range".
+struct ParamRange {
+  double lo = 0, hi = 0;
+  bool lo_open = false;
+  constexpr bool empty() const { return lo == hi && !lo_open; }
+  constexpr bool contains(double v) const { return (lo_open ? v > lo : v >= lo) && v <= hi; }  // NaN: false
+  std::string to_string() const;  // "[1, 1000]", "(0, 20]"
+};
+
+struct ParamSpec {
+  using Member = std::variant<int DetectorParams::*, double DetectorParams::*, bool DetectorParams::*,
+                              std::vector<int> DetectorParams::*>;
+  std::string_view name{};  // the field and its JSON key
+  Member member{};
+  ParamRange range{};       // valid values (a list: each element's); empty for a flag
+  std::string_view unit{};  // "px", "rad", ... or empty when unitless
+  std::string_view help{};  // one line: what it does
+  ParamRange slider{};      // the span worth trying by hand (the studio's slider); empty: no slider
+  bool odd = false;         // a kernel size: values of 3 and more must be odd
+  bool in_files = true;     // written into and read from thresholds and project files
+};
+
+inline constexpr std::array<ParamSpec, 13> kDetectorParamSpecs{{
+    {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
+     .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
+    {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
+     .help = "smoothing (Gaussian) standard deviation", .slider = {0.1, 5}},
+    {.name = "gradient_threshold", .member = &DetectorParams::gradient_threshold, .range = {0, 2040},
+     .help = "Sobel |dx| + |dy| below this is no edge", .slider = {1, 255}},
+    {.name = "anchor_threshold", .member = &DetectorParams::anchor_threshold, .range = {0, 255},
+     .help = "an anchor exceeds its neighbours by this", .slider = {0, 64}},
+    {.name = "scan_interval", .member = &DetectorParams::scan_interval, .range = {1, 1000}, .unit = "px",
+     .help = "anchors are sought on every k-th row and column"},
+    {.name = "min_line_length", .member = &DetectorParams::min_line_length, .range = {3, 10000}, .unit = "px",
+     .help = "pixels drawn before a line is fitted", .slider = {5, 200}},
+    {.name = "line_fit_error", .member = &DetectorParams::line_fit_error, .range = {0, 100, true}, .unit = "px^2",
+     .help = "largest mean squared error of a line fit"},
+    {.name = "px_to_segment_dist", .member = &DetectorParams::px_to_segment_dist, .range = {0, 100, true},
+     .unit = "px", .help = "largest distance of an inlier pixel to its line"},
+    {.name = "validation_threshold", .member = &DetectorParams::validation_threshold, .range = {0, 1.5708, true},
+     .unit = "rad", .help = "largest gradient angle error of a valid pixel",
+     .slider = {0.01, 1}},
+    {.name = "validate", .member = &DetectorParams::validate,
+     .help = "false: keep every segment, saliency = length"},
+    {.name = "treat_junctions", .member = &DetectorParams::treat_junctions,
+     .help = "jump over discontinuities along a line"},
+    {.name = "junction_sizes", .member = &DetectorParams::junction_sizes, .range = {1, 100}, .unit = "px",
+     .help = "jump lengths tried at a junction"},
+    {.name = "threads", .member = &DetectorParams::threads, .range = {1, 64},
+     .help = "threads of the gradient pass (speed only)", .in_files = false},
+}};
+
+// The spec named `name`, or nullptr.
+const ParamSpec* find_param_spec(std::string_view name);
+
+// Why `value` is not valid for `spec` ("0 is outside [1, 1000]"), or nothing when it is.
+std::optional<std::string> param_error(const ParamSpec& spec, double value);
+
+// The default (DetectorParams{}) as text: a number, true or false, or a list "a, b, c".
+std::string param_default_text(const ParamSpec& spec);
+
+// A number as the messages and help print it: up to 6 significant digits, no trailing zeros.
+std::string format_param_number(double value);
+
+// Validates every field against kDetectorParamSpecs; throws fieldlines::Error
+// "detector parameter <name>: <value> is outside <range>" on the first bad one.
+void validate(const DetectorParams& params);
+
+}  // namespace fieldlines
