@@ -18,6 +18,7 @@
 #include "app/cli/image_inputs.hpp"
 #include "app/cli/output_file.hpp"
 #include "app/cli/progress.hpp"
+#include "app/cli/subcommand.hpp"
 #include "bench/peers/order_rounds.hpp"
 #include "bench/peers/peer_detectors.hpp"
 
@@ -135,14 +136,12 @@ cv::Size parse_scale(const std::string& text) {
 }  // namespace
 
 int cmd_bench(const Args& args) {
-  const ParsedArgs a(args,
-                     {"--json", "--rounds", "--repeat", "--seed", "--clock", "--floor-target", "--scale",
-                      "--detector-threads"},
-                     {"--quiet", "--help", "-h"});
-  if (a.flag("--help") || a.flag("-h")) {
-    std::fputs(kHelp, stdout);
-    return 0;
-  }
+  const auto parsed = parse_or_print_help(args,
+                                          {"--json", "--rounds", "--repeat", "--seed", "--clock", "--floor-target",
+                                           "--scale", "--detector-threads"},
+                                          {"--quiet"}, kHelp);
+  if (!parsed) return 0;
+  const ParsedArgs& a = *parsed;
   if (a.positionals().empty()) throw Error("no PATH given: name at least one image or folder (see --help)");
   peers::RoundsParams rounds;
   rounds.rounds = a.int_or("--rounds", 5, 1, 10000);
@@ -159,8 +158,7 @@ int cmd_bench(const Args& args) {
   if (clock == "thread-cpu" && params.threads > 1)
     throw Error("--clock thread-cpu misses the work of --detector-threads' other threads: use --clock wall");
   rounds.clock = clock == "wall" ? peers::Clock::Wall : peers::Clock::ThreadCpu;
-  const std::optional<fs::path> json_out = a.has("--json") ? std::optional<fs::path>(*a.value("--json")) : std::nullopt;
-  if (json_out) check_output_path("--json", *json_out);
+  const std::optional<fs::path> json_out = output_path(a, "--json", a.positionals());
 
   ImageInputs inputs = expand_image_inputs(a.positionals());
   std::vector<FailedImage> failed = std::move(inputs.failed);
