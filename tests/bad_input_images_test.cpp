@@ -21,7 +21,7 @@ class BadImages : public BadInputTest {
  protected:
   // `fieldlines bench` on one good image plus `bad`: the bad one is skipped, exit 1.
   fieldlines::test::CliRun bench_with(const fs::path& bad) {
-    return run({"bench", "--repeat", "1", "--quiet", field_image("good.png").string(), bad.string()});
+    return run({"bench", "--rounds", "1", "--repeat", "1", "--quiet", field_image("good.png").string(), bad.string()});
   }
   // Replaces the first image of a synthetic set copy with `contents` and runs autolabel on it.
   fieldlines::test::CliRun autolabel_with_first_image(const std::string& contents, std::string& first_name) {
@@ -107,8 +107,8 @@ TEST_F(BadImages, BenchGreyAlphaAndDeepImagesAreTimed) {
   cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
   cv::cvtColor(bgr, bgra, cv::COLOR_BGR2BGRA);
   bgr.convertTo(deep, CV_16U, 257.0);
-  const auto r = run({"bench", "--repeat", "1", "--quiet", "--json", path("b.json").string(), image("g.png", grey).string(),
-                      image("a.png", bgra).string(), image("d.png", deep).string()});
+  const auto r = run({"bench", "--rounds", "1", "--repeat", "1", "--quiet", "--json", path("b.json").string(),
+                      image("g.png", grey).string(), image("a.png", bgra).string(), image("d.png", deep).string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(json::parse(read_text(path("b.json"))).at("images"), 3);
 }
@@ -116,7 +116,8 @@ TEST_F(BadImages, BenchGreyAlphaAndDeepImagesAreTimed) {
 TEST_F(BadImages, BenchOneByOneImageDoesNotCrashThePeers) {
   // OpenCV's own detectors get the 1x1 frame too; none may crash on it.
   const fs::path tiny = image("one.png", cv::Mat(1, 1, CV_8UC3, cv::Scalar(1, 2, 3)));
-  const auto r = run({"bench", "--repeat", "1", "--quiet", "--json", path("b.json").string(), tiny.string()});
+  const auto r =
+      run({"bench", "--rounds", "1", "--repeat", "1", "--quiet", "--json", path("b.json").string(), tiny.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json j = json::parse(read_text(path("b.json")));
   EXPECT_EQ(j.at("images"), 1);
