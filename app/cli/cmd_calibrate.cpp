@@ -52,7 +52,7 @@ options:
 examples:
   fieldlines calibrate venue-photos/ -o robot.json
   fieldlines calibrate warmup.mp4 --every 15 -o robot.json --json fit.json
-  fieldlines calibrate labels.csv -o robot.json && fieldlines eval robot.json labels.csv
+  fieldlines calibrate labels.csv -o robot.json && fieldlines eval labels.csv --thresholds robot.json
 )";
 
 struct Inputs {
