@@ -28,8 +28,8 @@ struct Objective {
   enum class Kind { TpMinusFp, F1, FBeta } kind = Kind::TpMinusFp;  // TP - FP is the paper's
   double beta = 1.0;     // FBeta only
   // TpMinusFp only: TP - fp_cost * FP. A group of segments is worth admitting when its precision
-  // exceeds fp_cost / (1 + fp_cost): 1 (the paper's) admits anything above 1/2; the "ours"
-  // protocol uses 1.5 (3/5), see docs/training.md.
+  // exceeds fp_cost / (1 + fp_cost): 1 (the paper's) admits anything above 1/2. The "ours"
+  // protocol's cost is set in protocol_spec() (protocols.cpp says why).
   double fp_cost = 1.0;
   double score(const ClassCounts& c) const;
   std::string name() const;  // "tp-fp", "tp-fp:1.5", "f1", "fbeta:2"
