@@ -1,5 +1,5 @@
 #pragma once
-// Thresholds as Python dicts: the thresholds file's JSON form (README, "The thresholds file"),
+// Thresholds as Python dicts: the thresholds file's JSON form (docs/training.md, "The thresholds file"),
 // so a dict read with load_thresholds_file, changed and saved is the same file a robot loads.
 // Conversion goes through Python's json module, which round-trips every double exactly.
 #include <string>

@@ -1,5 +1,5 @@
 // `import fieldlines`: the line detector, the classifier, the thresholds file and label-free
-// calibration, in the style of OpenCV's Python bindings (README, "Python").
+// calibration, in the style of OpenCV's Python bindings (docs/python.md).
 //
 // Errors: fieldlines::Error (bad input, bad values, malformed files) becomes ValueError; a file
 // that cannot be opened or written becomes OSError (FileNotFoundError, PermissionError, ...).
