@@ -18,8 +18,9 @@ binding's fixed cost per call is timed on a 2x2 image, which the detector return
 The CLI is asked for one round (--rounds 1; the rounds here alternate with Python) on the wall
 clock (--clock wall), what time.perf_counter measures here, and its block order is read: there,
 as in the loops here, our detector makes all its calls back to back, while its interleaved order
-puts the peers (EDLines, FLD, LSD) between them. The CLI's process still holds the peers' code
-and data, so the C++ in-process figure is the one that isolates the binding.
+puts the peers (EDLines, FLD, LSD) between them. The CLI is still another process, timed at
+other moments on its own copies of the images, so the C++ in-process figure is the one that
+isolates the binding.
 """
 import argparse
 import json
