@@ -90,8 +90,7 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
     const Vec2 mid{0.5f * (s.x0 + s.x1) + 0.5f, 0.5f * (s.y0 + s.y1) + 0.5f};
     const Vec2 centre{0.5f * (viewport.min.x + viewport.max.x), 0.5f * (viewport.min.y + viewport.max.y)};
     state.view.set(state.view.scale(), centre - mid * state.view.scale());
-    state.focus = focus;
-    state.focus_image = controller.current();
+    state.focus.hold(controller.current(), *focus);
   }
 
   ImGuiIO& io = ImGui::GetIO();
@@ -110,14 +109,12 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
   state.under.clear();
   if (hovered && !state.rect_active) studio::segments_under(segments, state.view, mouse, state.pick_radius_px, state.under);
   const std::optional<std::size_t> under = state.cycle.update(controller.current(), state.under, segments);
-  if (under) state.focus.reset();
-  const bool focus_here = state.focus && state.focus_image == controller.current() && *state.focus < segments.size();
-  if (under || (hovered && !state.rect_active && !focus_here)) {
-    controller.set_hovered(under);
-  } else if (focus_here) {
-    controller.set_hovered(state.focus);
+  const bool pointer_acted = hovered && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0 || ImGui::IsAnyMouseDown());
+  const std::optional<std::size_t> chosen = state.focus.update(controller.current(), segments.size(), under, pointer_acted);
+  if (chosen || (hovered && !state.rect_active)) {
+    controller.set_hovered(chosen);
   } else if (!ImGui::IsItemActive()) {
-    controller.set_hovered(std::nullopt);
+    controller.set_hovered(std::nullopt);  // a drag keeps its segment when the pointer slips off
   }
 
   // Left button: a click labels the hovered segment, a drag draws a selection rectangle.

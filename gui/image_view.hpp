@@ -7,6 +7,7 @@
 
 #include "gui/gl_texture.hpp"
 #include "gui/model/hover_cycle.hpp"
+#include "gui/model/hover_focus.hpp"
 #include "gui/model/missed_paint_view.hpp"
 #include "gui/model/overlay_style.hpp"
 #include "gui/model/studio_controller.hpp"
@@ -32,10 +33,9 @@ struct ImageViewState {
   bool texture_tinted = false;  // the texture holds missed.tinted(), not the plain image
   bool rect_active = false;
   studio::Vec2 rect_start{};
-  // The segment Tab brought into view (StudioController::focus_most_uncertain): it stays the
-  // hovered one, so M/B/N label it, until the pointer hovers another segment.
-  std::optional<std::size_t> focus;
-  std::size_t focus_image = 0;
+  // The segment Tab brought into view (StudioController::focus_most_uncertain), hovered until
+  // the pointer moves onto another segment.
+  studio::HoverFocus focus;
 };
 
 // Gesture map: left click = label hovered with the brush; right click = label hovered "none";

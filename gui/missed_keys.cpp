@@ -4,12 +4,21 @@
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // ImGuiContext: which widget is active, and whether it is a text field
 
 namespace fieldlines::gui {
 
 namespace {
 bool is_modifier(int key) { return key >= GLFW_KEY_LEFT_SHIFT && key <= GLFW_KEY_RIGHT_SUPER; }
 }  // namespace
+
+void route_tab_key() {
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  // The active widget at the end of the last frame (exact, unlike io.WantTextInput, which lags a
+  // frame). A slider being typed into (Ctrl+click) is a text field with the slider's id.
+  const bool typing = g.ActiveId != 0 && g.InputTextState.ID == g.ActiveId;
+  ImGui::GetIO().KeyMap[ImGuiKey_Tab] = typing ? GLFW_KEY_TAB : -1;  // -1: unmapped, never pressed
+}
 
 MissedKeyReplay::MissedKeyReplay(std::span<const KeyPress> keys) {
   ImGuiIO& io = ImGui::GetIO();

@@ -16,6 +16,13 @@
 
 namespace fieldlines::gui {
 
+// Before ImGui::NewFrame. ImGui 1.86 moves its keyboard focus on Tab in whatever window was
+// clicked last, with no widget active too: into the side panel's first field, and a slider
+// reached that way turns into a text box, which switches every shortcut off until Escape. So
+// ImGui sees Tab only while a text field is being typed in (Tab then moves to the next field);
+// otherwise Tab is the studio's shortcut alone.
+void route_tab_key();
+
 class MissedKeyReplay {
  public:
   // After ImGui::NewFrame, before any widget: every non-repeat press in `keys` reads as pressed

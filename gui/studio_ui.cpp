@@ -46,7 +46,9 @@ void handle_shortcuts(studio::StudioController& controller, UiState& ui, std::sp
       case studio::Action::LabelBoundary: controller.label_hovered(Label::Boundary); break;
       case studio::Action::LabelNone: controller.label_hovered(Label::None); break;
       case studio::Action::LabelClear: controller.label_hovered(Label::Unlabelled); break;
-      case studio::Action::NextUnderCursor: ui.image_view.cycle.next(); break;
+      case studio::Action::NextUnderCursor:
+        if (ui.image_view.cycle.next()) ui.image_view.focus.release();  // back to the cursor's segments
+        break;
       case studio::Action::Fit: ui.image_view.fit_requested = true; break;
       case studio::Action::PreviousImage: controller.previous_image(); break;
       case studio::Action::NextImage: controller.next_image(); break;

@@ -26,6 +26,7 @@
 #include "gui/model/video_frames.hpp"
 #include "gui/model/studio_args.hpp"
 #include "gui/model/studio_controller.hpp"
+#include "gui/missed_keys.hpp"
 #include "gui/studio_ui.hpp"
 
 namespace {
@@ -105,7 +106,8 @@ class StateWriter {
                                {"detecting", c.detection().running()},
                                {"to_review", c.to_review()},
                                {"auto_training", c.auto_train_busy()},
-                               {"image_error", c.image_error()}};
+                               {"image_error", c.image_error()},
+                               {"text_input", ImGui::GetIO().WantTextInput}};
     std::string text = state.dump();
     if (text == last_) return;
     write_file_atomically(path_, text + "\n");
@@ -227,6 +229,7 @@ int run(const studio::StudioArgs& args) {
     if (session) session->poll(glfwGetTime());
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    gui::route_tab_key();
     ImGui::NewFrame();
     if (session) {
       gui::draw_studio(*session, ui, keys);
