@@ -9,7 +9,7 @@
 #include "fieldlines/train/protocols.hpp"
 #include "fieldlines/train/training.hpp"
 #include "gui/model/canvas_state.hpp"
-#include "gui/model/folder_listing.hpp"
+#include "gui/model/export_form.hpp"
 #include "gui/model/frame_stats.hpp"
 
 namespace fieldlines::studio {
@@ -30,12 +30,7 @@ struct UiState {
   // applied thresholds are still the current ones.
   std::string applied_message;
   std::optional<Thresholds> applied_thresholds;
-  std::string export_path;          // as typed; set to the project's default when it opens
-  std::string export_path_project;  // the project file that default was made for
-  std::string export_message;
-  bool export_failed = false;       // export_message is an error
-  std::string export_preview;
-  FolderListing export_folders;  // the folder browser's listing, reread once a second
+  ExportForm export_form;
   std::vector<std::string> recent_projects;
   std::string open_request;    // a project the user asked to open (the main loop swaps sessions)
   std::string status_message;  // shown in the status bar
