@@ -31,7 +31,7 @@ void run_shortcut(const Shortcut& shortcut, StudioController& controller, UiStat
     case Action::Undo: controller.undo(); break;
     case Action::Redo: controller.redo(); break;
     case Action::ToggleTraining:
-      controller.training().running() ? controller.cancel_training() : controller.start_training(ui.train_params);
+      ui.training.toggle(controller);
       ui.show(Panel::Train);
       break;
     case Action::ShowTab: ui.show(static_cast<Panel>(shortcut.tab)); break;

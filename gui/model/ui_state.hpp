@@ -2,15 +2,13 @@
 // What the studio's window shows besides the project: the canvas, which tab, the Images tab's
 // filter, the Train and Export tabs' forms, the status line. Window-free, so tests reach it;
 // gui/panels draws it, gui/model/shortcut_actions.hpp and the panels change it.
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "fieldlines/train/protocols.hpp"
-#include "fieldlines/train/training.hpp"
 #include "gui/model/canvas_state.hpp"
 #include "gui/model/export_form.hpp"
 #include "gui/model/frame_stats.hpp"
+#include "gui/model/train_form.hpp"
 
 namespace fieldlines::studio {
 
@@ -24,12 +22,7 @@ struct UiState {
   Panel shown_panel = Panel::Label;
   int image_filter = 0;  // 0 all, 1 not fully labelled, 2 with errors, 3 test split
   int image_order = 0;   // Images tab: 0 file order, 1 least certain first (review order)
-  TrainParams train_params = protocol_spec(Protocol::Ours).train;  // as `fieldlines train` by default
-  int scatter_x = 0, scatter_y = 1;  // threshold dimensions of the particle scatter
-  // Train tab: what Apply did ("applied: marking P .. R .. on the test split"), shown while the
-  // applied thresholds are still the current ones.
-  std::string applied_message;
-  std::optional<Thresholds> applied_thresholds;
+  TrainForm training;
   ExportForm export_form;
   std::vector<std::string> recent_projects;
   std::string open_request;    // a project the user asked to open (the main loop swaps sessions)
