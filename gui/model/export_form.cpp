@@ -6,6 +6,7 @@
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "gui/model/studio_controller.hpp"
+#include "gui/model/studio_files.hpp"
 
 namespace fieldlines::studio {
 
@@ -53,7 +54,7 @@ void ExportForm::act(Action&& action) {
 }
 
 void ExportForm::write(const StudioController& controller) {
-  controller.export_thresholds(target_.path);
+  studio::export_thresholds(controller, target_.path);
   preview_ = read_file(target_.path);
   message_ = "wrote " + written_path(target_.path);
 }
@@ -88,7 +89,7 @@ void ExportForm::create_folder_and_export(const StudioController& controller) {
 void ExportForm::import_thresholds(StudioController& controller) {
   act([&] {
     if (!target_.ok()) throw Error(target_.error);
-    controller.import_thresholds(target_.path);
+    studio::import_thresholds(controller, target_.path);
     preview_ = read_file(target_.path);
     return "imported " + written_path(target_.path);
   });
@@ -98,7 +99,7 @@ void ExportForm::export_labels_csv(const StudioController& controller) {
   act([&] {
     if (!target_.ok()) throw Error(target_.error);
     const fs::path csv = target_.path.parent_path() / (controller.project_file().stem().string() + "-labels.csv");
-    const std::size_t rows = controller.export_labels_csv(csv);
+    const std::size_t rows = studio::export_labels_csv(controller, csv);
     return "wrote " + std::to_string(rows) + " labelled segments to " + written_path(csv) +
            " (the authors' reference CSV; `fieldlines train` reads it)";
   });

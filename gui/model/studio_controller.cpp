@@ -2,15 +2,12 @@
 // (features, predictions, split, counts); the review loop already lives apart (review.cpp).
 #include "gui/model/studio_controller.hpp"
 
-#include "fieldlines/data/reference_csv.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <exception>
 
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/data/image_io.hpp"
-#include "fieldlines/detect/thresholds_file.hpp"
 #include "fieldlines/train/splits.hpp"
 
 namespace fieldlines::studio {
@@ -306,45 +303,6 @@ void StudioController::set_detector_params(const DetectorParams& params) {
   project_.detector = params;
   settings_dirty_ = true;
   settings_changed_at_ = -1;
-}
-
-std::size_t StudioController::export_labels_csv(const std::filesystem::path& path) const {
-  const std::vector<ReferenceRow> rows = reference_rows_from_project(project_);
-  write_reference_csv(path, rows);
-  return rows.size();
-}
-
-void StudioController::export_thresholds(const std::filesystem::path& path) const {
-  ThresholdsFile file;
-  file.detector = project_.detector;
-  file.thresholds = project_.thresholds;
-  const auto metrics = [](const Counts& c) {
-    const auto one = [](const ClassCounts& k) {
-      return nlohmann::json{{"precision", k.precision()}, {"recall", k.recall()}, {"f1", k.f1()},
-                            {"tp", k.tp}, {"fp", k.fp}, {"fn", k.fn}};
-    };
-    return nlohmann::json{{"marking", one(c.marking)}, {"boundary", one(c.boundary)}};
-  };
-  // An empty part has no figures (null, as `fieldlines train` writes an empty test part).
-  const auto part = [&](const Counts& c, std::size_t segments) { return segments ? metrics(c) : nlohmann::json(nullptr); };
-  // The split under the keys `fieldlines train` uses, so both provenances read alike.
-  file.provenance = {{"tool", "fieldlines-studio"},
-                     {"project", project_file_.string()},
-                     {"labelled_segments", labelled_total()},
-                     {"split", to_string(project_.split.mode)},
-                     {"train_fraction", project_.split.train_fraction},
-                     {"seed", project_.split.seed},
-                     {"counts", {{"train_segments", train_segments_}, {"test_segments", test_segments_}}},
-                     {"train", part(train_counts_, train_segments_)},
-                     {"test", part(test_counts_, test_segments_)}};
-  save_thresholds_file(path, file);
-}
-
-void StudioController::import_thresholds(const std::filesystem::path& path) {
-  const ThresholdsFile file = load_thresholds_file(path);
-  set_detector_params(file.detector);
-  set_thresholds(file.thresholds);
-  flush();
 }
 
 void StudioController::autosave() {

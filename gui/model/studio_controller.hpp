@@ -126,13 +126,6 @@ class StudioController {
   // (on exit, so a failed final save is reported). Without background_save there is none.
   std::string finish_saves();
 
-  // --- robot thresholds file (fieldlines/thresholds_file.hpp); both throw fieldlines::Error
-  void export_thresholds(const std::filesystem::path& path) const;
-  // The labelled segments as the reference annotation CSV (unlabelled ones are not in that
-  // format); returns how many rows were written.
-  std::size_t export_labels_csv(const std::filesystem::path& path) const;
-  void import_thresholds(const std::filesystem::path& path);
-
   // --- detection (background)
   const DetectorParams& detector_params() const { return project_.detector; }
   void set_detector_params(const DetectorParams& params);
