@@ -26,8 +26,7 @@ std::filesystem::path StudioController::image_path(std::size_t index) const {
 }
 
 bool StudioController::needs_detection(std::size_t index) const {
-  const ImageEntry& e = project_.images.at(index);
-  return e.segments.empty() && e.detect_ms == 0;
+  return studio::needs_detection(project_.images.at(index));
 }
 
 void StudioController::select_image(std::size_t index) {
@@ -338,32 +337,7 @@ std::string StudioController::finish_saves() {
 
 // ---------------------------------------------------------------- background jobs
 
-std::string DetectionReport::summary() const {
-  if (!error.empty()) return "detection could not start: " + error;
-  if (detected == 0 && failed.empty()) return {};
-  std::string out = "detected " + std::to_string(detected) + " image" + (detected == 1 ? "" : "s");
-  if (labels_kept + labels_lost > 0) {
-    out += "; " + std::to_string(labels_kept) + " labels kept";
-    if (labels_lost > 0) out += ", " + std::to_string(labels_lost) + " could not be re-attached";
-  }
-  if (!failed.empty()) out += "; " + std::to_string(failed.size()) + " failed: " + failed.front().second;
-  if (failed.size() > 1) out += " (and " + std::to_string(failed.size() - 1) + " more, see the Images tab)";
-  return out;
-}
-
-const std::string& StudioController::detection_error(std::size_t index) const {
-  static const std::string none;
-  return index < detection_errors_.size() ? detection_errors_[index] : none;
-}
-
-void StudioController::detect_all(bool only_undetected) {
-  detection_report_ = {};
-  std::vector<DetectionJob::Item> items;
-  for (std::size_t i = 0; i < image_count(); ++i) {
-    if (!only_undetected || needs_detection(i)) items.push_back({i, image_path(i)});
-  }
-  detection_.start(std::move(items), project_.detector, project_.thresholds);
-}
+void StudioController::detect_all(bool only_undetected) { detection_.start(project_, project_file_, only_undetected); }
 
 std::vector<Segment> StudioController::all_segments() const {
   std::vector<Segment> all;
@@ -423,25 +397,9 @@ void StudioController::poll(double now_s) {
       if (settings_dirty_) settings_changed_at_ = now_s;  // failed: retry after another delay
     }
   }
-  bool changed = false;
-  for (DetectionResult& r : detection_.poll()) {
-    detection_errors_.resize(image_count());
-    detection_errors_[r.image] = r.error;
-    if (!r.error.empty()) {
-      detection_report_.failed.emplace_back(r.image, r.error);
-      continue;
-    }
-    // Human labels move to the new segments that match the old ones (the rest are Unlabelled).
-    for (Segment& s : r.segments) s.label = Label::Unlabelled;
-    const ReattachStats stats = project_.replace_segments(r.image, std::move(r.segments));
-    ++detection_report_.detected;
-    detection_report_.labels_kept += stats.kept;
-    detection_report_.labels_lost += stats.lost;
-    project_.images[r.image].detect_ms = r.detect_ms;
-    rebuild_features(r.image);
-    changed = true;
-  }
-  if (const auto& outcome = detection_.outcome(); outcome && !outcome->ok()) detection_report_.error = outcome->error();
+  const std::vector<std::size_t>& detected = detection_.poll(project_);
+  for (const std::size_t image : detected) rebuild_features(image);
+  const bool changed = !detected.empty();
   if (changed) {
     history_.clear();  // edits may refer to segments that no longer exist
     if (hovered_ && *hovered_ >= segments().size()) hovered_.reset();
