@@ -109,7 +109,7 @@ void StudioController::rebuild_all_features() {
 // ---------------------------------------------------------------- labelling
 
 void StudioController::after_label_change() {
-  auto_train_pending_ = options_.auto_train;
+  live_.labels_changed();
   resplit();
   recount();
   autosave();
@@ -388,8 +388,7 @@ bool StudioController::apply_training_result() {
 void StudioController::poll(double now_s) {
   training_.poll();
   take_saves(saver_.poll());
-  if (const auto retrained = auto_train_.poll()) adopt_auto_train(*retrained);
-  if (!auto_train_.error().empty()) auto_train_summary_ = "retraining failed: " + auto_train_.error();
+  if (const auto retrained = live_.poll()) adopt_auto_train(*retrained);
   if (settings_dirty_) {
     if (settings_changed_at_ < 0) settings_changed_at_ = now_s;
     if (now_s - settings_changed_at_ >= settings_save_delay_s) {
@@ -403,14 +402,14 @@ void StudioController::poll(double now_s) {
   if (changed) {
     history_.clear();  // edits may refer to segments that no longer exist
     if (hovered_ && *hovered_ >= segments().size()) hovered_.reset();
-    auto_train_pending_ = options_.auto_train;
+    live_.labels_changed();
     resplit();
     recount();
     autosave();
   }
   // Started after the settings save above, so the save never waits on it; one run at a time,
   // and a change made while one runs starts the next when it is adopted.
-  if (options_.auto_train && auto_train_pending_ && !auto_train_.running()) start_auto_train();
+  if (live_.due()) start_auto_train();
 }
 
 }  // namespace fieldlines::studio

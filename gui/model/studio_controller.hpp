@@ -157,12 +157,12 @@ class StudioController {
   // retrains both classes on the train split in the background (poll() starts and adopts it);
   // the result becomes the thresholds, refreshes predictions, proposals and metrics, and adds a
   // point to the learning curve. Editing thresholds by hand turns it off (the caller does).
-  bool auto_train() const { return options_.auto_train; }
-  void set_auto_train(bool on);  // on: retrains the current labels at the next poll
-  bool auto_train_busy() const { return auto_train_.running() || auto_train_pending_; }
-  const std::vector<CurvePoint>& learning_curve() const { return curve_; }
+  bool auto_train() const { return live_.on(); }
+  void set_auto_train(bool on) { live_.set_on(on); }  // on: retrains the current labels at the next poll
+  bool auto_train_busy() const { return live_.busy(); }
+  const std::vector<CurvePoint>& learning_curve() const { return live_.curve(); }
   // One line: what the last retraining used and how long it took, or why it failed.
-  const std::string& auto_train_summary() const { return auto_train_summary_; }
+  const std::string& auto_train_summary() const { return live_.summary(); }
   // Polls until no retraining is pending or running (tests; shutdown needs nothing: the job joins).
   void wait_for_auto_train(double now_s = 0);
 
@@ -230,10 +230,7 @@ class StudioController {
   std::optional<Thresholds> proposal_thresholds_;  // what the proposals were made with
   std::string proposal_summary_;
   std::optional<std::size_t> focus_request_;
-  AutoTrainJob auto_train_;
-  bool auto_train_pending_ = false;
-  std::vector<CurvePoint> curve_;
-  std::string auto_train_summary_;
+  LiveRetraining live_{options_.auto_train};
 };
 
 }  // namespace fieldlines::studio
