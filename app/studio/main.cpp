@@ -26,7 +26,10 @@
 #include "gui/model/video_frames.hpp"
 #include "gui/model/studio_args.hpp"
 #include "gui/model/studio_controller.hpp"
-#include "gui/studio_ui.hpp"
+#include "app/studio/gl_texture.hpp"
+#include "app/studio/key_input.hpp"
+#include "gui/model/ui_state.hpp"
+#include "gui/panels/studio_window.hpp"
 
 namespace {
 
@@ -77,11 +80,11 @@ class Window {
   Window& operator=(const Window&) = delete;
   GLFWwindow* get() const { return window_; }
   // Key presses since the last frame (UI thread only); the frame consumes and clears them.
-  std::vector<gui::KeyPress>& keys() { return keys_; }
+  std::vector<app::KeyPress>& keys() { return keys_; }
 
  private:
   GLFWwindow* window_ = nullptr;
-  std::vector<gui::KeyPress> keys_;
+  std::vector<app::KeyPress> keys_;
 };
 
 // Writes the state an automated test needs to drive the window (where the image is on screen,
@@ -90,7 +93,7 @@ class Window {
 class StateWriter {
  public:
   explicit StateWriter(std::string path) : path_(std::move(path)) {}
-  void update(const studio::StudioController& c, const gui::UiState& ui) {
+  void update(const studio::StudioController& c, const studio::UiState& ui) {
     if (path_.empty()) return;
     const auto& view = ui.image_view.view;
     const nlohmann::json state{{"scale", view.scale()},
@@ -98,14 +101,15 @@ class StateWriter {
                                {"image", c.current()},
                                {"hovered", c.hovered() ? static_cast<long>(*c.hovered()) : -1L},
                                {"save_count", c.save_count()},
-                               {"panel", gui::panel_name(ui.shown_panel)},
+                               {"panel", studio::panel_name(ui.shown_panel)},
                                {"training", c.training().running()},
                                {"trained", c.training().outcome().has_value()},
                                {"detection", c.detection_report().summary()},
                                {"detecting", c.detection().running()},
                                {"to_review", c.to_review()},
                                {"auto_training", c.auto_train_busy()},
-                               {"image_error", c.image_error()}};
+                               {"image_error", c.image_error()},
+                               {"text_input", ImGui::GetIO().WantTextInput}};
     std::string text = state.dump();
     if (text == last_) return;
     write_file_atomically(path_, text + "\n");
@@ -169,10 +173,11 @@ int run(const studio::StudioArgs& args) {
   options.auto_train = args.auto_train;
   options.background_save = true;
   studio::FrameStats frame_stats(bench ? static_cast<std::size_t>(args.bench_frames) : 240);
-  gui::UiState ui;
+  studio::UiState ui;
+  app::GlTexture texture;  // the canvas's picture (ui.image_view.picture_to_upload)
   ui.frame_stats = &frame_stats;
   ui.recent_projects = recent;
-  std::vector<gui::KeyPress>& keys = window.keys();
+  std::vector<app::KeyPress>& keys = window.keys();
 
   // Behind a pointer so that opening a recent project can replace the whole session; empty while
   // a video's frames are still being extracted (`import`), which the same loop shows.
@@ -227,9 +232,16 @@ int run(const studio::StudioArgs& args) {
     if (session) session->poll(glfwGetTime());
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    app::route_tab_key();
     ImGui::NewFrame();
     if (session) {
-      gui::draw_studio(*session, ui, keys);
+      const app::MissedKeyReplay missed_keys(keys);  // text fields get the quick taps ImGui 1.86 loses
+      app::run_shortcuts(keys, *session, ui);
+      if (const cv::Mat* picture = ui.image_view.picture_to_upload(*session)) {
+        ui.image_view.fit_requested |= picture->cols != texture.width() || picture->rows != texture.height();
+        texture.upload(*picture);
+      }
+      gui::draw_studio(*session, ui, {texture.id(), texture.width(), texture.height()});
     } else {
       gui::draw_video_import(*import, ui);
     }
@@ -249,7 +261,7 @@ int run(const studio::StudioArgs& args) {
         auto opened = studio::open_project(request);
         const std::string file = opened.file.string();
         open_session(std::move(opened));
-        ui.image_view.texture_generation = static_cast<std::size_t>(-1);
+        ui.image_view.reupload();
         ui.image_view.fit_requested = true;
         ui.status_message = "opened " + file;
       } catch (const std::exception& e) {

@@ -1,6 +1,7 @@
 #include "gui/model/auto_train.hpp"
 
 #include <chrono>
+#include <cstdio>
 
 namespace fieldlines::studio {
 
@@ -28,6 +29,31 @@ std::optional<AutoTrainResult> AutoTrainJob::poll() {
   }
   error_.clear();
   return job_.outcome()->value();
+}
+
+void LiveRetraining::set_on(bool on) {
+  if (on == on_) return;
+  on_ = on;
+  pending_ = on;
+}
+
+void LiveRetraining::start(AutoTrainInput input) {
+  pending_ = false;
+  job_.start(std::move(input));
+}
+
+std::optional<AutoTrainResult> LiveRetraining::poll() {
+  std::optional<AutoTrainResult> r = job_.poll();
+  if (!job_.error().empty()) summary_ = "retraining failed: " + job_.error();
+  if (!r || !on_) return std::nullopt;  // turned off while it ran: the user's thresholds stay
+  curve_.push_back({r->train_segments + r->test_segments, r->test_segments, r->test_counts});
+  char line[160];
+  std::snprintf(line, sizeof line, "retrained on %zu train-split labels in %.0f ms (marking %s, boundary %s)",
+                r->train_segments, r->elapsed_ms, std::string(to_string(r->made.marking)).c_str(),
+                std::string(to_string(r->made.boundary)).c_str());
+  summary_ = line;
+  if (!r->made.note.empty()) summary_ += "; " + r->made.note;
+  return r;
 }
 
 }  // namespace fieldlines::studio

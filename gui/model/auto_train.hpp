@@ -5,6 +5,7 @@
 // user watches the classifier converge as they label.
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "fieldlines/train/metrics.hpp"
@@ -47,6 +48,39 @@ class AutoTrainJob {
  private:
   Job<int, AutoTrainResult> job_;
   std::string error_;
+};
+
+// Live retraining's state: on or off, whether labels changed since the last start, the one
+// background run, and the learning curve and one-line summary of what the runs did. The
+// controller marks label changes, starts a run with its labels when due(), and adopts what
+// poll() returns.
+class LiveRetraining {
+ public:
+  explicit LiveRetraining(bool on) : on_(on) {}
+  bool on() const { return on_; }
+  // On: retrains the current labels at the next chance (the labels made while it was off).
+  void set_on(bool on);
+  void labels_changed() { pending_ = on_; }
+  // A run is wanted: on, labels changed since the last start, none running.
+  bool due() const { return on_ && pending_ && !job_.running(); }
+  void start(AutoTrainInput input);
+  // Labels changed, but there is nothing to learn from yet: no run, no longer due.
+  void skip() { pending_ = false; }
+  bool busy() const { return job_.running() || pending_; }
+  // Once per frame: a finished run's result while on (added to the curve and the summary);
+  // nothing while running, after a failure (the summary says why) or when turned off meanwhile.
+  std::optional<AutoTrainResult> poll();
+  void wait() { job_.wait(); }
+
+  const std::vector<CurvePoint>& curve() const { return curve_; }
+  const std::string& summary() const { return summary_; }
+
+ private:
+  bool on_;
+  bool pending_ = false;
+  AutoTrainJob job_;
+  std::vector<CurvePoint> curve_;
+  std::string summary_;
 };
 
 }  // namespace fieldlines::studio

@@ -44,12 +44,13 @@ std::optional<std::size_t> HoverCycle::update(std::size_t image, std::span<const
   return hovered_;
 }
 
-void HoverCycle::next() {
-  if (candidates_.size() < 2) return;
+bool HoverCycle::next() {
+  if (candidates_.size() < 2) return false;
   // From the one chosen so far (two presses in one frame move twice). hovered_ itself changes at
   // the next update, so a cycled-to segment is not mistaken for one whose label just changed.
   const std::optional<std::size_t> from = pinned_ ? pinned_ : hovered_;
   pinned_ = candidates_[(rank(from) + 1) % candidates_.size()];
+  return true;
 }
 
 std::size_t HoverCycle::rank(std::optional<std::size_t> segment) const {

@@ -23,8 +23,8 @@ class HoverCycle {
   std::optional<std::size_t> update(std::size_t image, std::span<const std::size_t> under,
                                     std::span<const Segment> segments);
   // Space: the next segment of the set (by distance, wrapping), hovered from the next update.
-  // Nothing with fewer than two.
-  void next();
+  // Nothing with fewer than two (returns false).
+  bool next();
 
   std::optional<std::size_t> hovered() const { return hovered_; }
   std::span<const std::size_t> candidates() const { return candidates_; }

@@ -11,7 +11,7 @@
 namespace fieldlines::studio {
 
 // Key codes are GLFW's (glfw3.h: printable keys are their upper-case ASCII), so the window
-// passes its codes through unchanged; gui/studio_ui.cpp checks them against glfw3.h.
+// passes its codes through unchanged; app/studio/key_input.cpp checks them against glfw3.h.
 enum class Key : int {
   None = 0,  // a mouse input: handled by the image view, listed for the help
   B = 'B', C = 'C', E = 'E', F = 'F', M = 'M', N = 'N', P = 'P', Q = 'Q', T = 'T', Y = 'Y', Z = 'Z',

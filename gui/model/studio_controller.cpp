@@ -2,15 +2,12 @@
 // (features, predictions, split, counts); the review loop already lives apart (review.cpp).
 #include "gui/model/studio_controller.hpp"
 
-#include "fieldlines/data/reference_csv.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <exception>
 
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/data/image_io.hpp"
-#include "fieldlines/detect/thresholds_file.hpp"
 #include "fieldlines/train/splits.hpp"
 
 namespace fieldlines::studio {
@@ -29,8 +26,7 @@ std::filesystem::path StudioController::image_path(std::size_t index) const {
 }
 
 bool StudioController::needs_detection(std::size_t index) const {
-  const ImageEntry& e = project_.images.at(index);
-  return e.segments.empty() && e.detect_ms == 0;
+  return studio::needs_detection(project_.images.at(index));
 }
 
 void StudioController::select_image(std::size_t index) {
@@ -113,7 +109,7 @@ void StudioController::rebuild_all_features() {
 // ---------------------------------------------------------------- labelling
 
 void StudioController::after_label_change() {
-  auto_train_pending_ = options_.auto_train;
+  live_.labels_changed();
   resplit();
   recount();
   autosave();
@@ -308,45 +304,6 @@ void StudioController::set_detector_params(const DetectorParams& params) {
   settings_changed_at_ = -1;
 }
 
-std::size_t StudioController::export_labels_csv(const std::filesystem::path& path) const {
-  const std::vector<ReferenceRow> rows = reference_rows_from_project(project_);
-  write_reference_csv(path, rows);
-  return rows.size();
-}
-
-void StudioController::export_thresholds(const std::filesystem::path& path) const {
-  ThresholdsFile file;
-  file.detector = project_.detector;
-  file.thresholds = project_.thresholds;
-  const auto metrics = [](const Counts& c) {
-    const auto one = [](const ClassCounts& k) {
-      return nlohmann::json{{"precision", k.precision()}, {"recall", k.recall()}, {"f1", k.f1()},
-                            {"tp", k.tp}, {"fp", k.fp}, {"fn", k.fn}};
-    };
-    return nlohmann::json{{"marking", one(c.marking)}, {"boundary", one(c.boundary)}};
-  };
-  // An empty part has no figures (null, as `fieldlines train` writes an empty test part).
-  const auto part = [&](const Counts& c, std::size_t segments) { return segments ? metrics(c) : nlohmann::json(nullptr); };
-  // The split under the keys `fieldlines train` uses, so both provenances read alike.
-  file.provenance = {{"tool", "fieldlines-studio"},
-                     {"project", project_file_.string()},
-                     {"labelled_segments", labelled_total()},
-                     {"split", to_string(project_.split.mode)},
-                     {"train_fraction", project_.split.train_fraction},
-                     {"seed", project_.split.seed},
-                     {"counts", {{"train_segments", train_segments_}, {"test_segments", test_segments_}}},
-                     {"train", part(train_counts_, train_segments_)},
-                     {"test", part(test_counts_, test_segments_)}};
-  save_thresholds_file(path, file);
-}
-
-void StudioController::import_thresholds(const std::filesystem::path& path) {
-  const ThresholdsFile file = load_thresholds_file(path);
-  set_detector_params(file.detector);
-  set_thresholds(file.thresholds);
-  flush();
-}
-
 void StudioController::autosave() {
   if (!options_.autosave) return;
   if (options_.background_save) {
@@ -380,32 +337,7 @@ std::string StudioController::finish_saves() {
 
 // ---------------------------------------------------------------- background jobs
 
-std::string DetectionReport::summary() const {
-  if (!error.empty()) return "detection could not start: " + error;
-  if (detected == 0 && failed.empty()) return {};
-  std::string out = "detected " + std::to_string(detected) + " image" + (detected == 1 ? "" : "s");
-  if (labels_kept + labels_lost > 0) {
-    out += "; " + std::to_string(labels_kept) + " labels kept";
-    if (labels_lost > 0) out += ", " + std::to_string(labels_lost) + " could not be re-attached";
-  }
-  if (!failed.empty()) out += "; " + std::to_string(failed.size()) + " failed: " + failed.front().second;
-  if (failed.size() > 1) out += " (and " + std::to_string(failed.size() - 1) + " more, see the Images tab)";
-  return out;
-}
-
-const std::string& StudioController::detection_error(std::size_t index) const {
-  static const std::string none;
-  return index < detection_errors_.size() ? detection_errors_[index] : none;
-}
-
-void StudioController::detect_all(bool only_undetected) {
-  detection_report_ = {};
-  std::vector<DetectionJob::Item> items;
-  for (std::size_t i = 0; i < image_count(); ++i) {
-    if (!only_undetected || needs_detection(i)) items.push_back({i, image_path(i)});
-  }
-  detection_.start(std::move(items), project_.detector, project_.thresholds);
-}
+void StudioController::detect_all(bool only_undetected) { detection_.start(project_, project_file_, only_undetected); }
 
 std::vector<Segment> StudioController::all_segments() const {
   std::vector<Segment> all;
@@ -456,8 +388,7 @@ bool StudioController::apply_training_result() {
 void StudioController::poll(double now_s) {
   training_.poll();
   take_saves(saver_.poll());
-  if (const auto retrained = auto_train_.poll()) adopt_auto_train(*retrained);
-  if (!auto_train_.error().empty()) auto_train_summary_ = "retraining failed: " + auto_train_.error();
+  if (const auto retrained = live_.poll()) adopt_auto_train(*retrained);
   if (settings_dirty_) {
     if (settings_changed_at_ < 0) settings_changed_at_ = now_s;
     if (now_s - settings_changed_at_ >= settings_save_delay_s) {
@@ -465,36 +396,20 @@ void StudioController::poll(double now_s) {
       if (settings_dirty_) settings_changed_at_ = now_s;  // failed: retry after another delay
     }
   }
-  bool changed = false;
-  for (DetectionResult& r : detection_.poll()) {
-    detection_errors_.resize(image_count());
-    detection_errors_[r.image] = r.error;
-    if (!r.error.empty()) {
-      detection_report_.failed.emplace_back(r.image, r.error);
-      continue;
-    }
-    // Human labels move to the new segments that match the old ones (the rest are Unlabelled).
-    for (Segment& s : r.segments) s.label = Label::Unlabelled;
-    const ReattachStats stats = project_.replace_segments(r.image, std::move(r.segments));
-    ++detection_report_.detected;
-    detection_report_.labels_kept += stats.kept;
-    detection_report_.labels_lost += stats.lost;
-    project_.images[r.image].detect_ms = r.detect_ms;
-    rebuild_features(r.image);
-    changed = true;
-  }
-  if (const auto& outcome = detection_.outcome(); outcome && !outcome->ok()) detection_report_.error = outcome->error();
+  const std::vector<std::size_t>& detected = detection_.poll(project_);
+  for (const std::size_t image : detected) rebuild_features(image);
+  const bool changed = !detected.empty();
   if (changed) {
     history_.clear();  // edits may refer to segments that no longer exist
     if (hovered_ && *hovered_ >= segments().size()) hovered_.reset();
-    auto_train_pending_ = options_.auto_train;
+    live_.labels_changed();
     resplit();
     recount();
     autosave();
   }
   // Started after the settings save above, so the save never waits on it; one run at a time,
   // and a change made while one runs starts the next when it is adopted.
-  if (options_.auto_train && auto_train_pending_ && !auto_train_.running()) start_auto_train();
+  if (live_.due()) start_auto_train();
 }
 
 }  // namespace fieldlines::studio

@@ -13,7 +13,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "gui/model/auto_train.hpp"
-#include "gui/model/detection_job.hpp"
+#include "gui/model/project_detection.hpp"
 #include "gui/model/project_saver.hpp"
 #include "fieldlines/detect/classifier.hpp"
 #include "fieldlines/detect/detector.hpp"
@@ -33,17 +33,6 @@ struct ControllerOptions {
   // Autosave writes on a background thread (gui/model/project_saver.hpp); the studio turns it
   // on, tests that read the file right after an edit leave it off.
   bool background_save = false;
-};
-
-// What the background detections since the last detect_all() did: how many images, the labels
-// re-attached to the new segments by geometry and those that could not be, the images that
-// failed (unreadable or corrupt), each with its reason, and why the whole job could not run.
-struct DetectionReport {
-  std::size_t detected = 0;
-  std::size_t labels_kept = 0, labels_lost = 0;
-  std::vector<std::pair<std::size_t, std::string>> failed;  // image index, reason
-  std::string error;  // the job could not start (e.g. bad detector parameters)
-  std::string summary() const;  // one line for the status bar; empty before any detection
 };
 
 struct ImageProgress {
@@ -126,22 +115,15 @@ class StudioController {
   // (on exit, so a failed final save is reported). Without background_save there is none.
   std::string finish_saves();
 
-  // --- robot thresholds file (fieldlines/thresholds_file.hpp); both throw fieldlines::Error
-  void export_thresholds(const std::filesystem::path& path) const;
-  // The labelled segments as the reference annotation CSV (unlabelled ones are not in that
-  // format); returns how many rows were written.
-  std::size_t export_labels_csv(const std::filesystem::path& path) const;
-  void import_thresholds(const std::filesystem::path& path);
-
   // --- detection (background)
   const DetectorParams& detector_params() const { return project_.detector; }
   void set_detector_params(const DetectorParams& params);
   void detect_all(bool only_undetected = true);
-  DetectionJob& detection() { return detection_; }
-  const DetectionJob& detection() const { return detection_; }
-  const DetectionReport& detection_report() const { return detection_report_; }
+  DetectionJob& detection() { return detection_.job(); }
+  const DetectionJob& detection() const { return detection_.job(); }
+  const DetectionReport& detection_report() const { return detection_.report(); }
   // The reason the image's last detection failed, or empty.
-  const std::string& detection_error(std::size_t index) const;
+  const std::string& detection_error(std::size_t index) const { return detection_.error(index); }
   // Detector time of the current image (from the project), 0 when not detected here.
   double current_detect_ms() const;
   // Mean detector time over the project's detected images.
@@ -175,12 +157,12 @@ class StudioController {
   // retrains both classes on the train split in the background (poll() starts and adopts it);
   // the result becomes the thresholds, refreshes predictions, proposals and metrics, and adds a
   // point to the learning curve. Editing thresholds by hand turns it off (the caller does).
-  bool auto_train() const { return options_.auto_train; }
-  void set_auto_train(bool on);  // on: retrains the current labels at the next poll
-  bool auto_train_busy() const { return auto_train_.running() || auto_train_pending_; }
-  const std::vector<CurvePoint>& learning_curve() const { return curve_; }
+  bool auto_train() const { return live_.on(); }
+  void set_auto_train(bool on) { live_.set_on(on); }  // on: retrains the current labels at the next poll
+  bool auto_train_busy() const { return live_.busy(); }
+  const std::vector<CurvePoint>& learning_curve() const { return live_.curve(); }
   // One line: what the last retraining used and how long it took, or why it failed.
-  const std::string& auto_train_summary() const { return auto_train_summary_; }
+  const std::string& auto_train_summary() const { return live_.summary(); }
   // Polls until no retraining is pending or running (tests; shutdown needs nothing: the job joins).
   void wait_for_auto_train(double now_s = 0);
 
@@ -243,17 +225,12 @@ class StudioController {
   std::size_t save_count_ = 0;
   std::string save_error_;
   ProjectSaver saver_;  // before the jobs: they are stopped first, then the last save finishes
-  DetectionJob detection_;
-  DetectionReport detection_report_;
-  std::vector<std::string> detection_errors_;  // per image
+  ProjectDetection detection_;
   TrainingJob training_;
   std::optional<Thresholds> proposal_thresholds_;  // what the proposals were made with
   std::string proposal_summary_;
   std::optional<std::size_t> focus_request_;
-  AutoTrainJob auto_train_;
-  bool auto_train_pending_ = false;
-  std::vector<CurvePoint> curve_;
-  std::string auto_train_summary_;
+  LiveRetraining live_{options_.auto_train};
 };
 
 }  // namespace fieldlines::studio

@@ -3,7 +3,7 @@
 
 #include <imgui.h>
 
-#include "gui/image_view.hpp"
+#include "gui/panels/image_view.hpp"
 #include "gui/model/shortcuts.hpp"
 #include "gui/panels/panels.hpp"
 

@@ -4,10 +4,14 @@
 
 #include <imgui.h>
 
+#include "gui/model/overlay_style.hpp"
 #include "gui/model/studio_controller.hpp"
-#include "gui/studio_ui.hpp"
+#include "gui/model/ui_state.hpp"
 
 namespace fieldlines::gui {
+
+using studio::Panel;
+using studio::UiState;
 
 void draw_images_panel(studio::StudioController& controller, UiState& ui);
 void draw_label_panel(studio::StudioController& controller, UiState& ui);
@@ -28,5 +32,8 @@ void wrapped_hint(const std::string& text);
 
 // The colour legend of the current overlay mode (also drawn on the Label panel).
 void draw_legend(studio::OverlayMode mode);
+
+// The in-app help: every row of gui/model/shortcuts.hpp's table.
+void draw_shortcut_help();
 
 }  // namespace fieldlines::gui

@@ -69,7 +69,7 @@ void draw_scatter(const studio::TrainingSnapshot& snap, int dx, int dy) {
 }  // namespace
 
 void draw_train_panel(studio::StudioController& controller, UiState& ui) {
-  TrainParams& p = ui.train_params;
+  TrainParams& p = ui.training.params;
   draw_auto_train(controller);
   ImGui::Separator();
   ImGui::TextUnformatted("PSO training");
@@ -96,13 +96,13 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
   ImGui::EndDisabled();
 
   if (!job.running()) {
-    if (ImGui::Button("Start training")) controller.start_training(p);
+    if (ImGui::Button("Start training")) ui.training.toggle(controller);
     // A marker, not the button's tooltip: that one covered the progress line under the button.
     ImGui::SameLine();
     help_marker(("trains on the train split, reports both splits\n" + controller.split_summary()).c_str());
     if (controller.test_segment_count() == 0) ImGui::TextColored({1, 0.7f, 0.3f, 1}, "%s", controller.split_summary().c_str());
   } else if (ImGui::Button("Stop")) {
-    controller.cancel_training();
+    ui.training.toggle(controller);
   }
 
   if (const auto& snap = job.latest()) {
@@ -125,9 +125,9 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
       ImGui::PlotLines("##best", scores.data(), static_cast<int>(scores.size()), 0, overlay, *lo - pad, *hi + pad,
                        {ImGui::GetContentRegionAvail().x, 90});
     }
-    ImGui::Combo("x", &ui.scatter_x, kDims, IM_ARRAYSIZE(kDims));
-    ImGui::Combo("y", &ui.scatter_y, kDims, IM_ARRAYSIZE(kDims));
-    draw_scatter(*snap, ui.scatter_x, ui.scatter_y);
+    ImGui::Combo("x", &ui.training.scatter_x, kDims, IM_ARRAYSIZE(kDims));
+    ImGui::Combo("y", &ui.training.scatter_y, kDims, IM_ARRAYSIZE(kDims));
+    draw_scatter(*snap, ui.training.scatter_x, ui.training.scatter_y);
   }
   if (const auto& outcome = job.outcome()) {
     ImGui::Separator();
@@ -144,15 +144,9 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
                     studio::format_figure(c.boundary, c.boundary.precision()).c_str(),
                     studio::format_figure(c.boundary, c.boundary.recall()).c_str());
       }
-      if (ImGui::Button("Apply these thresholds") && controller.apply_training_result()) {
-        ui.applied_thresholds = controller.thresholds();
-        ui.applied_message = studio::applied_summary(controller.test_segment_count() ? controller.test_counts()
-                                                                                     : controller.train_counts(),
-                                                     controller.test_segment_count() ? "test" : "train");
-      }
-      // Until the thresholds change again (a slider, an import, auto-train, another Apply).
-      if (ui.applied_thresholds && *ui.applied_thresholds == controller.thresholds()) {
-        wrapped_text({0.5f, 0.9f, 0.5f, 1}, ui.applied_message);
+      if (ImGui::Button("Apply these thresholds")) ui.training.apply(controller);
+      if (const std::string& applied = ui.training.applied_message(controller); !applied.empty()) {
+        wrapped_text({0.5f, 0.9f, 0.5f, 1}, applied);
       }
     }
   }

@@ -12,6 +12,7 @@
 #include "gui/model/export_path.hpp"
 #include "gui/model/folder_listing.hpp"
 #include "gui/model/studio_controller.hpp"
+#include "gui/model/studio_files.hpp"
 
 namespace fs = std::filesystem;
 using fieldlines::studio::default_export_path;
@@ -116,7 +117,7 @@ TEST(ExportPath, UnwritablePlacesAreClearErrorsAndWriteNothing) {
   ASSERT_TRUE(target.ok()) << target.error;
   EXPECT_TRUE(target.folder_exists);
   try {
-    c.export_thresholds(target.path);
+    fieldlines::studio::export_thresholds(c, target.path);
     FAIL() << "exported into /proc";
   } catch (const fieldlines::Error& e) {
     EXPECT_NE(std::string(e.what()).find("/proc/robot-thresholds.json"), std::string::npos) << e.what();

@@ -20,6 +20,7 @@
 #include "fieldlines/train/splits.hpp"
 #include "gui/model/figures.hpp"
 #include "gui/model/studio_controller.hpp"
+#include "gui/model/studio_files.hpp"
 
 namespace fs = fieldlines::studio;
 using fieldlines::Label;
@@ -253,7 +254,7 @@ TEST(StudioController, EmptyTestSplitIsSaidAndShowsNoNumber) {
   const auto& train = s.controller.train_counts().marking;
   EXPECT_EQ(fs::format_figure(train, train.precision()), "1.000");
   const auto out = s.dir.path() / "robot.json";
-  s.controller.export_thresholds(out);
+  fs::export_thresholds(s.controller, out);
   const auto provenance = nlohmann::json::parse(fieldlines::read_file(out))["provenance"];
   EXPECT_TRUE(provenance["test"].is_null()) << provenance.dump();
   EXPECT_FALSE(provenance["train"].is_null());
@@ -270,7 +271,7 @@ TEST(StudioController, SplitSpecIsRecordedInTheProjectAndTheProvenance) {
   s.controller.flush();
   EXPECT_EQ(s.on_disk().split, spec);
   const auto out = s.dir.path() / "robot.json";
-  s.controller.export_thresholds(out);
+  fs::export_thresholds(s.controller, out);
   const auto provenance = nlohmann::json::parse(fieldlines::read_file(out))["provenance"];
   EXPECT_EQ(provenance["split"], "row");
   EXPECT_EQ(provenance["train_fraction"], 0.5);
@@ -332,12 +333,12 @@ TEST(StudioController, ExportAndImportRobotThresholds) {
   t.marking.thresholds.max_angle_deg = 33;
   s.controller.set_thresholds(t);
   const auto out = s.dir.path() / "robot.json";
-  s.controller.export_thresholds(out);
+  fs::export_thresholds(s.controller, out);
   t.marking.thresholds.max_angle_deg = 10;
   s.controller.set_thresholds(t);
-  s.controller.import_thresholds(out);
+  fs::import_thresholds(s.controller, out);
   EXPECT_FLOAT_EQ(s.controller.thresholds().marking.thresholds.max_angle_deg, 33);
-  EXPECT_THROW(s.controller.import_thresholds(s.dir.path() / "nope.json"), fieldlines::Error);
+  EXPECT_THROW(fs::import_thresholds(s.controller, s.dir.path() / "nope.json"), fieldlines::Error);
 }
 
 // A full disk while autosaving (simulated in a child process with RLIMIT_FSIZE, SIGXFSZ
@@ -380,12 +381,12 @@ TEST(StudioController, FullDiskAutosaveKeepsThePreviousFileAndRecovers) {
 TEST(StudioController, ExportToAnUnwritablePathIsAnErrorAndImportOfGarbageChangesNothing) {
   Session s;
   fieldlines::write_file_atomically(s.dir.path() / "plain-file", "x");
-  EXPECT_THROW(s.controller.export_thresholds(s.dir.path() / "plain-file" / "robot.json"), fieldlines::Error);
+  EXPECT_THROW(fs::export_thresholds(s.controller, s.dir.path() / "plain-file" / "robot.json"), fieldlines::Error);
   const auto thresholds = s.controller.thresholds();
   for (const std::string text : {"{", "{\"format\": \"fieldlines-thresholds\", \"version\": 99}", "[]",
                                  "{\"format\": \"fieldlines-thresholds\", \"version\": 1, \"marking\": {\"min_projection\": NaN}}"}) {
     fieldlines::write_file_atomically(s.dir.path() / "bad.json", text);
-    EXPECT_THROW(s.controller.import_thresholds(s.dir.path() / "bad.json"), fieldlines::Error) << text;
+    EXPECT_THROW(fs::import_thresholds(s.controller, s.dir.path() / "bad.json"), fieldlines::Error) << text;
     EXPECT_FLOAT_EQ(s.controller.thresholds().marking.thresholds.max_angle_deg, thresholds.marking.thresholds.max_angle_deg);
   }
 }
@@ -395,10 +396,10 @@ TEST(StudioController, LabelsExportAsTheReferenceCsv) {
   const std::size_t some[] = {0, 3};
   ASSERT_TRUE(s.controller.label(some, Label::Marking));
   const auto csv = s.dir.path() / "labels.csv";
-  EXPECT_EQ(s.controller.export_labels_csv(csv), 2u);
+  EXPECT_EQ(fs::export_labels_csv(s.controller, csv), 2u);
   const auto rows = fieldlines::read_reference_csv(csv);
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0].segment.label, Label::Marking);
   EXPECT_FLOAT_EQ(rows[1].segment.x0, s.controller.segments()[3].x0);
-  EXPECT_THROW(s.controller.export_labels_csv(s.dir.path() / "no-such-folder" / "l.csv"), fieldlines::Error);
+  EXPECT_THROW(fs::export_labels_csv(s.controller, s.dir.path() / "no-such-folder" / "l.csv"), fieldlines::Error);
 }

@@ -1,4 +1,7 @@
 #pragma once
+// The keyboard between GLFW, ImGui and the studio's shortcuts (the window's side of
+// gui/model/shortcut_actions.hpp).
+//
 // ImGui 1.86's GLFW backend tells widgets about keys only through io.KeysDown and io.KeyCtrl etc.,
 // the state at the start of a frame. A key pressed and released between two frames never reaches
 // a text field, and a key still down whose Ctrl was already released reads as a plain key: a
@@ -12,9 +15,29 @@
 #include <span>
 #include <vector>
 
-#include "gui/studio_ui.hpp"
+#include "gui/model/studio_controller.hpp"
+#include "gui/model/ui_state.hpp"
 
-namespace fieldlines::gui {
+namespace fieldlines::app {
+
+// A key press as GLFW reported it. Shortcuts are taken from these events rather than from ImGui's
+// key-down state, because a press and release arriving between two frames would otherwise be lost.
+struct KeyPress {
+  int key = 0;   // GLFW_KEY_*
+  int mods = 0;  // GLFW_MOD_* bits
+  bool repeat = false;
+};
+
+// After ImGui::NewFrame: runs the shortcuts of gui/model/shortcuts.hpp's table for these key
+// presses (none while a text field has focus).
+void run_shortcuts(std::span<const KeyPress> keys, studio::StudioController& controller, studio::UiState& ui);
+
+// Before ImGui::NewFrame. ImGui 1.86 moves its keyboard focus on Tab in whatever window was
+// clicked last, with no widget active too: into the side panel's first field, and a slider
+// reached that way turns into a text box, which switches every shortcut off until Escape. So
+// ImGui sees Tab only while a text field is being typed in (Tab then moves to the next field);
+// otherwise Tab is the studio's shortcut alone.
+void route_tab_key();
 
 class MissedKeyReplay {
  public:
@@ -32,4 +55,4 @@ class MissedKeyReplay {
   int mods_ = 0;
 };
 
-}  // namespace fieldlines::gui
+}  // namespace fieldlines::app

@@ -1,15 +1,45 @@
-#include "gui/missed_keys.hpp"
+#include "app/studio/key_input.hpp"
 
 #include <algorithm>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // ImGuiContext: which widget is active, and whether it is a text field
 
-namespace fieldlines::gui {
+#include "gui/model/shortcut_actions.hpp"
+
+namespace fieldlines::app {
 
 namespace {
 bool is_modifier(int key) { return key >= GLFW_KEY_LEFT_SHIFT && key <= GLFW_KEY_RIGHT_SUPER; }
 }  // namespace
+
+// The table's key codes are GLFW's, so key presses pass through unchanged.
+static_assert(static_cast<int>(studio::Key::M) == GLFW_KEY_M && static_cast<int>(studio::Key::Z) == GLFW_KEY_Z);
+static_assert(static_cast<int>(studio::Key::B) == GLFW_KEY_B && static_cast<int>(studio::Key::Y) == GLFW_KEY_Y);
+static_assert(static_cast<int>(studio::Key::Left) == GLFW_KEY_LEFT && static_cast<int>(studio::Key::Right) == GLFW_KEY_RIGHT);
+static_assert(static_cast<int>(studio::Key::F1) == GLFW_KEY_F1 && static_cast<int>(studio::Key::F6) == GLFW_KEY_F6);
+static_assert(static_cast<int>(studio::Key::Enter) == GLFW_KEY_ENTER && static_cast<int>(studio::Key::Tab) == GLFW_KEY_TAB);
+static_assert(static_cast<int>(studio::Key::P) == GLFW_KEY_P && static_cast<int>(studio::Key::Space) == GLFW_KEY_SPACE);
+
+void run_shortcuts(std::span<const KeyPress> keys, studio::StudioController& controller, studio::UiState& ui) {
+  if (ImGui::GetIO().WantTextInput) return;
+  for (const KeyPress& k : keys) {
+    const studio::Chord pressed{static_cast<studio::Key>(k.key), (k.mods & GLFW_MOD_CONTROL) != 0,
+                                (k.mods & GLFW_MOD_SHIFT) != 0};
+    if (const studio::Shortcut* shortcut = studio::find_shortcut(pressed, k.repeat)) {
+      studio::run_shortcut(*shortcut, controller, ui);
+    }
+  }
+}
+
+void route_tab_key() {
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  // The active widget at the end of the last frame (exact, unlike io.WantTextInput, which lags a
+  // frame). A slider being typed into (Ctrl+click) is a text field with the slider's id.
+  const bool typing = g.ActiveId != 0 && g.InputTextState.ID == g.ActiveId;
+  ImGui::GetIO().KeyMap[ImGuiKey_Tab] = typing ? GLFW_KEY_TAB : -1;  // -1: unmapped, never pressed
+}
 
 MissedKeyReplay::MissedKeyReplay(std::span<const KeyPress> keys) {
   ImGuiIO& io = ImGui::GetIO();
@@ -46,4 +76,4 @@ MissedKeyReplay::~MissedKeyReplay() {
   io.KeyCtrl = ctrl_, io.KeyShift = shift_, io.KeyAlt = alt_, io.KeySuper = super_, io.KeyMods = mods_;
 }
 
-}  // namespace fieldlines::gui
+}  // namespace fieldlines::app

@@ -5,7 +5,7 @@
 
 #include <imgui.h>
 
-namespace fieldlines::gui {
+namespace fieldlines::app {
 
 class GlTexture {
  public:
@@ -26,4 +26,4 @@ class GlTexture {
   int width_ = 0, height_ = 0;
 };
 
-}  // namespace fieldlines::gui
+}  // namespace fieldlines::app

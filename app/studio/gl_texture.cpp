@@ -1,4 +1,4 @@
-#include "gui/gl_texture.hpp"
+#include "app/studio/gl_texture.hpp"
 
 #include <cstdint>
 
@@ -6,7 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-namespace fieldlines::gui {
+namespace fieldlines::app {
 
 GlTexture::~GlTexture() {
   if (id_ != 0) glDeleteTextures(1, &id_);
@@ -36,4 +36,4 @@ void GlTexture::upload(const cv::Mat& bgr) {
 
 ImTextureID GlTexture::id() const { return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(id_)); }
 
-}  // namespace fieldlines::gui
+}  // namespace fieldlines::app

@@ -1,4 +1,4 @@
-#include "gui/image_view.hpp"
+#include "gui/panels/image_view.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -58,19 +58,9 @@ void segment_tooltip(const Segment& s, Label predicted, const SegmentFeatures& f
               s.grad_x[0], s.grad_x[1], s.grad_x[2]);
 }
 
-void draw_image_view(studio::StudioController& controller, ImageViewState& state, ImVec2 size) {
+void draw_image_view(studio::StudioController& controller, studio::CanvasState& state, const CanvasTexture& texture,
+                     ImVec2 size) {
   const cv::Mat& image = controller.image();
-  // With "paint with no segment" on, the texture is the tinted copy, refreshed when it changes.
-  const bool tinted_changed = state.show_missed &&
-                              state.missed.update(image, controller.segments(), controller.image_generation());
-  const bool shows_tint = state.show_missed && !state.missed.tinted().empty();
-  if (state.texture_generation != controller.image_generation() || tinted_changed || shows_tint != state.texture_tinted) {
-    const bool new_size = image.cols != state.texture.width() || image.rows != state.texture.height();
-    state.texture.upload(shows_tint ? state.missed.tinted() : image);
-    state.texture_tinted = shows_tint;
-    state.fit_requested |= new_size;
-    state.texture_generation = controller.image_generation();
-  }
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   size.x = std::max(size.x, 50.0f);
   size.y = std::max(size.y, 50.0f);
@@ -90,8 +80,7 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
     const Vec2 mid{0.5f * (s.x0 + s.x1) + 0.5f, 0.5f * (s.y0 + s.y1) + 0.5f};
     const Vec2 centre{0.5f * (viewport.min.x + viewport.max.x), 0.5f * (viewport.min.y + viewport.max.y)};
     state.view.set(state.view.scale(), centre - mid * state.view.scale());
-    state.focus = focus;
-    state.focus_image = controller.current();
+    state.focus.hold(controller.current(), *focus);
   }
 
   ImGuiIO& io = ImGui::GetIO();
@@ -110,14 +99,12 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
   state.under.clear();
   if (hovered && !state.rect_active) studio::segments_under(segments, state.view, mouse, state.pick_radius_px, state.under);
   const std::optional<std::size_t> under = state.cycle.update(controller.current(), state.under, segments);
-  if (under) state.focus.reset();
-  const bool focus_here = state.focus && state.focus_image == controller.current() && *state.focus < segments.size();
-  if (under || (hovered && !state.rect_active && !focus_here)) {
-    controller.set_hovered(under);
-  } else if (focus_here) {
-    controller.set_hovered(state.focus);
+  const bool pointer_acted = hovered && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0 || ImGui::IsAnyMouseDown());
+  const std::optional<std::size_t> chosen = state.focus.update(controller.current(), segments.size(), under, pointer_acted);
+  if (chosen || (hovered && !state.rect_active)) {
+    controller.set_hovered(chosen);
   } else if (!ImGui::IsItemActive()) {
-    controller.set_hovered(std::nullopt);
+    controller.set_hovered(std::nullopt);  // a drag keeps its segment when the pointer slips off
   }
 
   // Left button: a click labels the hovered segment, a drag draws a selection rectangle.
@@ -144,8 +131,8 @@ void draw_image_view(studio::StudioController& controller, ImageViewState& state
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->PushClipRect(origin, {origin.x + size.x, origin.y + size.y}, true);
   draw->AddRectFilled(origin, {origin.x + size.x, origin.y + size.y}, IM_COL32(25, 25, 28, 255));
-  if (!state.texture.empty()) {
-    draw->AddImage(state.texture.id(), im(state.view.image_to_screen({0, 0})),
+  if (texture.id && texture.width > 0) {
+    draw->AddImage(texture.id, im(state.view.image_to_screen({0, 0})),
                    im(state.view.image_to_screen(image_size)));
   } else {
     const std::string msg = controller.image_error().empty() ? "no image" : controller.image_error();

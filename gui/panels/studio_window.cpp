@@ -1,81 +1,15 @@
-#include "gui/studio_ui.hpp"
+#include "gui/panels/studio_window.hpp"
 
 #include <cstdio>
 #include <string>
 
-#include <GLFW/glfw3.h>
 #include <imgui.h>
 
-#include "gui/missed_keys.hpp"
 #include "gui/model/shortcuts.hpp"
+#include "gui/panels/image_view.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
-
-const char* panel_name(Panel panel) {
-  switch (panel) {
-    case Panel::Images: return "Images";
-    case Panel::Label: return "Label";
-    case Panel::Thresholds: return "Thresholds";
-    case Panel::Train: return "Train";
-    case Panel::Metrics: return "Metrics";
-    case Panel::Export: return "Export";
-    case Panel::Count: break;
-  }
-  return "?";
-}
-
-// The table's key codes are GLFW's, so key presses pass through unchanged.
-static_assert(static_cast<int>(studio::Key::M) == GLFW_KEY_M && static_cast<int>(studio::Key::Z) == GLFW_KEY_Z);
-static_assert(static_cast<int>(studio::Key::B) == GLFW_KEY_B && static_cast<int>(studio::Key::Y) == GLFW_KEY_Y);
-static_assert(static_cast<int>(studio::Key::Left) == GLFW_KEY_LEFT && static_cast<int>(studio::Key::Right) == GLFW_KEY_RIGHT);
-static_assert(static_cast<int>(studio::Key::F1) == GLFW_KEY_F1 && static_cast<int>(studio::Key::F6) == GLFW_KEY_F6);
-static_assert(static_cast<int>(studio::Key::Enter) == GLFW_KEY_ENTER && static_cast<int>(studio::Key::Tab) == GLFW_KEY_TAB);
-static_assert(static_cast<int>(studio::Key::P) == GLFW_KEY_P && static_cast<int>(studio::Key::Space) == GLFW_KEY_SPACE);
-static_assert(static_cast<int>(Panel::Count) == 6, "the shortcut table's tabs are F1..F6");
-
-void handle_shortcuts(studio::StudioController& controller, UiState& ui, std::span<const KeyPress> keys) {
-  if (ImGui::GetIO().WantTextInput) return;
-  for (const KeyPress& k : keys) {
-    const studio::Chord pressed{static_cast<studio::Key>(k.key), (k.mods & GLFW_MOD_CONTROL) != 0,
-                                (k.mods & GLFW_MOD_SHIFT) != 0};
-    const studio::Shortcut* shortcut = studio::find_shortcut(pressed, k.repeat);
-    if (!shortcut) continue;
-    switch (shortcut->action) {
-      case studio::Action::LabelMarking: controller.label_hovered(Label::Marking); break;
-      case studio::Action::LabelBoundary: controller.label_hovered(Label::Boundary); break;
-      case studio::Action::LabelNone: controller.label_hovered(Label::None); break;
-      case studio::Action::LabelClear: controller.label_hovered(Label::Unlabelled); break;
-      case studio::Action::NextUnderCursor: ui.image_view.cycle.next(); break;
-      case studio::Action::Fit: ui.image_view.fit_requested = true; break;
-      case studio::Action::PreviousImage: controller.previous_image(); break;
-      case studio::Action::NextImage: controller.next_image(); break;
-      case studio::Action::NextImageWithErrors: controller.next_image_with_errors(); break;
-      case studio::Action::Propose: ui.status_message = controller.propose(); break;
-      case studio::Action::AcceptProposals: {
-        const std::size_t n = controller.accept_proposals();
-        ui.status_message = "accepted " + std::to_string(n) + " proposals";
-        break;
-      }
-      case studio::Action::FocusUncertain:
-        if (!controller.focus_most_uncertain()) ui.status_message = "nothing left to review";
-        break;
-      case studio::Action::Undo: controller.undo(); break;
-      case studio::Action::Redo: controller.redo(); break;
-      case studio::Action::ToggleTraining:
-        controller.training().running() ? controller.cancel_training() : controller.start_training(ui.train_params);
-        ui.requested_panel = Panel::Train;
-        ui.panel_request_pending = true;
-        break;
-      case studio::Action::ShowTab:
-        ui.requested_panel = static_cast<Panel>(shortcut->tab);
-        ui.panel_request_pending = true;
-        break;
-      case studio::Action::Quit: ui.quit_requested = true; break;
-      case studio::Action::Pointer: break;  // mouse inputs are the image view's
-    }
-  }
-}
 
 void draw_shortcut_help() {
   if (!ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_SizingFixedFit)) return;
@@ -126,8 +60,7 @@ void draw_status_bar(const studio::StudioController& controller, const UiState& 
 
 }  // namespace
 
-void draw_studio(studio::StudioController& controller, UiState& ui, std::span<const KeyPress> keys) {
-  const MissedKeyReplay missed_keys(keys);  // text fields get the quick taps ImGui 1.86 loses
+void draw_studio(studio::StudioController& controller, UiState& ui, const CanvasTexture& texture) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(viewport->WorkPos);
   ImGui::SetNextWindowSize(viewport->WorkSize);
@@ -137,12 +70,11 @@ void draw_studio(studio::StudioController& controller, UiState& ui, std::span<co
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBringToFrontOnFocus |
                    ImGuiWindowFlags_NoSavedSettings);
   ImGui::PopStyleVar(2);
-  handle_shortcuts(controller, ui, keys);
 
   const float side_width = 400;
   const float status_height = ImGui::GetFrameHeightWithSpacing();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
-  draw_image_view(controller, ui.image_view, {avail.x - side_width - 6, avail.y - status_height});
+  draw_image_view(controller, ui.image_view, texture, {avail.x - side_width - 6, avail.y - status_height});
   ImGui::SameLine();
   ImGui::BeginChild("side", {side_width, avail.y - status_height});
   if (ImGui::BeginTabBar("panels")) {
@@ -150,7 +82,7 @@ void draw_studio(studio::StudioController& controller, UiState& ui, std::span<co
       const Panel panel = static_cast<Panel>(p);
       const ImGuiTabItemFlags flags =
           ui.panel_request_pending && ui.requested_panel == panel ? ImGuiTabItemFlags_SetSelected : 0;
-      if (ImGui::BeginTabItem(panel_name(panel), nullptr, flags)) {
+      if (ImGui::BeginTabItem(studio::panel_name(panel), nullptr, flags)) {
         ui.shown_panel = panel;
         switch (panel) {
           case Panel::Images: draw_images_panel(controller, ui); break;

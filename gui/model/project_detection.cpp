@@ -1,0 +1,58 @@
+#include "gui/model/project_detection.hpp"
+
+namespace fieldlines::studio {
+
+std::string DetectionReport::summary() const {
+  if (!error.empty()) return "detection could not start: " + error;
+  if (detected == 0 && failed.empty()) return {};
+  std::string out = "detected " + std::to_string(detected) + " image" + (detected == 1 ? "" : "s");
+  if (labels_kept + labels_lost > 0) {
+    out += "; " + std::to_string(labels_kept) + " labels kept";
+    if (labels_lost > 0) out += ", " + std::to_string(labels_lost) + " could not be re-attached";
+  }
+  if (!failed.empty()) out += "; " + std::to_string(failed.size()) + " failed: " + failed.front().second;
+  if (failed.size() > 1) out += " (and " + std::to_string(failed.size() - 1) + " more, see the Images tab)";
+  return out;
+}
+
+bool needs_detection(const ImageEntry& image) { return image.segments.empty() && image.detect_ms == 0; }
+
+void ProjectDetection::start(const Project& project, const std::filesystem::path& project_file, bool only_undetected) {
+  report_ = {};
+  std::vector<DetectionJob::Item> items;
+  for (std::size_t i = 0; i < project.images.size(); ++i) {
+    if (!only_undetected || needs_detection(project.images[i])) {
+      items.push_back({i, Project::resolve(project_file, project.images[i].path)});
+    }
+  }
+  job_.start(std::move(items), project.detector, project.thresholds);
+}
+
+const std::vector<std::size_t>& ProjectDetection::poll(Project& project) {
+  changed_.clear();
+  for (DetectionResult& r : job_.poll()) {
+    errors_.resize(project.images.size());
+    errors_[r.image] = r.error;
+    if (!r.error.empty()) {
+      report_.failed.emplace_back(r.image, r.error);
+      continue;
+    }
+    // Human labels move to the new segments that match the old ones (the rest are Unlabelled).
+    for (Segment& s : r.segments) s.label = Label::Unlabelled;
+    const ReattachStats stats = project.replace_segments(r.image, std::move(r.segments));
+    ++report_.detected;
+    report_.labels_kept += stats.kept;
+    report_.labels_lost += stats.lost;
+    project.images[r.image].detect_ms = r.detect_ms;
+    changed_.push_back(r.image);
+  }
+  if (const auto& outcome = job_.outcome(); outcome && !outcome->ok()) report_.error = outcome->error();
+  return changed_;
+}
+
+const std::string& ProjectDetection::error(std::size_t image) const {
+  static const std::string none;
+  return image < errors_.size() ? errors_[image] : none;
+}
+
+}  // namespace fieldlines::studio

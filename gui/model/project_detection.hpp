@@ -1,0 +1,52 @@
+#pragma once
+// Background detection of a project's images as the studio tracks it: the job, what the runs
+// since the last start did (DetectionReport), the reason each image's last detection failed,
+// and taking finished images into the project with their labels re-attached by geometry.
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fieldlines/data/project.hpp"
+#include "gui/model/detection_job.hpp"
+
+namespace fieldlines::studio {
+
+// What the background detections since the last start did: how many images, the labels
+// re-attached to the new segments by geometry and those that could not be, the images that
+// failed (unreadable or corrupt), each with its reason, and why the whole job could not run.
+struct DetectionReport {
+  std::size_t detected = 0;
+  std::size_t labels_kept = 0, labels_lost = 0;
+  std::vector<std::pair<std::size_t, std::string>> failed;  // image index, reason
+  std::string error;  // the job could not start (e.g. bad detector parameters)
+  std::string summary() const;  // one line for the status bar; empty before any detection
+};
+
+// An image whose segments were never detected (no segments and no detection time).
+bool needs_detection(const ImageEntry& image);
+
+class ProjectDetection {
+ public:
+  // Detects the project's images (only those never detected, or all) with its detector
+  // parameters and thresholds; a running detection is replaced.
+  void start(const Project& project, const std::filesystem::path& project_file, bool only_undetected);
+  // Once per frame: takes the finished images into `project` (segments replaced, human labels
+  // moved to the matching new segments, detection time) and returns their indices.
+  const std::vector<std::size_t>& poll(Project& project);
+
+  DetectionJob& job() { return job_; }
+  const DetectionJob& job() const { return job_; }
+  const DetectionReport& report() const { return report_; }
+  // The reason the image's last detection failed, or empty.
+  const std::string& error(std::size_t image) const;
+
+ private:
+  DetectionJob job_;
+  DetectionReport report_;
+  std::vector<std::string> errors_;  // per image
+  std::vector<std::size_t> changed_;  // poll's result, reused
+};
+
+}  // namespace fieldlines::studio

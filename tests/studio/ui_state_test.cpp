@@ -1,0 +1,122 @@
+// The studio's window state without a window: what the shortcut table's keys do to the
+// controller and the UI state (gui/model/shortcut_actions.hpp), and which picture the canvas's
+// texture must hold (CanvasState::picture_to_upload).
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "fieldlines/data/project.hpp"
+#include "fixtures.hpp"
+#include "gui/model/shortcut_actions.hpp"
+#include "gui/model/studio_controller.hpp"
+#include "gui/model/ui_state.hpp"
+
+namespace fs = fieldlines::studio;
+using fieldlines::Label;
+using fieldlines::Project;
+
+namespace {
+
+struct Session {
+  Session() : dir("ui-state"), file(studio_test::write_project(dir.path(), 2, 6)), controller(Project::load(file), file) {}
+  // Presses the table's key for `action` (the first row that has one).
+  void press(fs::Action action, int tab = -1) {
+    for (const fs::Shortcut& s : fs::shortcuts()) {
+      if (s.action == action && (tab < 0 || s.tab == tab)) return fs::run_shortcut(s, controller, ui);
+    }
+    FAIL() << "no shortcut for the action";
+  }
+  studio_test::TempDir dir;
+  std::filesystem::path file;
+  fs::StudioController controller;
+  fs::UiState ui;
+};
+
+}  // namespace
+
+TEST(ShortcutActions, LabelKeysLabelTheHoveredSegmentAndUndoRedoFollow) {
+  Session s;
+  s.controller.set_hovered(3);
+  s.press(fs::Action::LabelBoundary);
+  EXPECT_EQ(s.controller.segments()[3].label, Label::Boundary);
+  s.press(fs::Action::Undo);
+  EXPECT_EQ(s.controller.segments()[3].label, Label::Unlabelled);
+  s.press(fs::Action::Redo);
+  EXPECT_EQ(Project::load(s.file).images[0].segments[3].label, Label::Boundary);
+  s.press(fs::Action::LabelClear);
+  EXPECT_EQ(s.controller.segments()[3].label, Label::Unlabelled);
+}
+
+TEST(ShortcutActions, TabsImagesQuitAndTheStatusLine) {
+  Session s;
+  s.ui.panel_request_pending = false;
+  s.press(fs::Action::ShowTab, 5);
+  EXPECT_EQ(s.ui.requested_panel, fs::Panel::Export);
+  EXPECT_TRUE(s.ui.panel_request_pending);
+  EXPECT_STREQ(fs::panel_name(s.ui.requested_panel), "Export");
+  s.press(fs::Action::NextImage);
+  EXPECT_EQ(s.controller.current(), 1u);
+  s.press(fs::Action::PreviousImage);
+  EXPECT_EQ(s.controller.current(), 0u);
+  s.ui.image_view.fit_requested = false;
+  s.press(fs::Action::Fit);
+  EXPECT_TRUE(s.ui.image_view.fit_requested);
+  s.press(fs::Action::Propose);
+  EXPECT_NE(s.ui.status_message.find("proposals"), std::string::npos) << s.ui.status_message;
+  s.press(fs::Action::AcceptProposals);
+  EXPECT_EQ(s.ui.status_message, "accepted 6 proposals");
+  EXPECT_FALSE(s.ui.quit_requested);
+  s.press(fs::Action::Quit);
+  EXPECT_TRUE(s.ui.quit_requested);
+}
+
+TEST(ShortcutActions, TabHoversTheLeastCertainUntilNothingIsLeft) {
+  Session s;
+  s.press(fs::Action::FocusUncertain);
+  ASSERT_TRUE(s.controller.hovered().has_value());
+  EXPECT_TRUE(s.ui.status_message.empty());
+  for (std::size_t image = 0; image < 2; ++image) {
+    s.controller.select_image(image);
+    s.controller.label_rest_as_none();
+  }
+  s.press(fs::Action::FocusUncertain);
+  EXPECT_EQ(s.ui.status_message, "nothing left to review");
+}
+
+TEST(ShortcutActions, SpaceReleasesTabsSegmentOnlyWhenItHasAnotherToGoTo) {
+  Session s;
+  const auto segments = s.controller.segments();
+  fs::CanvasState& canvas = s.ui.image_view;
+  canvas.focus.hold(0, 4);
+  const std::vector<std::size_t> one{1};
+  canvas.cycle.update(0, one, segments);
+  s.press(fs::Action::NextUnderCursor);  // a single segment under the cursor: nothing to cycle to
+  EXPECT_EQ(canvas.focus.held(), 4u);
+  const std::vector<std::size_t> two{1, 2};
+  canvas.cycle.update(0, two, segments);
+  s.press(fs::Action::NextUnderCursor);
+  EXPECT_FALSE(canvas.focus.held().has_value());
+  EXPECT_EQ(canvas.cycle.update(0, two, segments), 2u);
+}
+
+TEST(CanvasState, HandsOutThePictureOncePerChange) {
+  Session s;
+  fs::CanvasState canvas;
+  const cv::Mat* first = canvas.picture_to_upload(s.controller);
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(first->cols, 320);
+  EXPECT_EQ(canvas.picture_to_upload(s.controller), nullptr);  // up to date: no upload per frame
+  s.controller.next_image();
+  ASSERT_NE(canvas.picture_to_upload(s.controller), nullptr);
+  EXPECT_EQ(canvas.picture_to_upload(s.controller), nullptr);
+  // "Paint with no segment": the tinted copy, once; off again: the plain image, once.
+  canvas.show_missed = true;
+  const cv::Mat* tinted = canvas.picture_to_upload(s.controller);
+  ASSERT_NE(tinted, nullptr);
+  EXPECT_EQ(tinted, &canvas.missed.tinted());
+  EXPECT_EQ(canvas.picture_to_upload(s.controller), nullptr);
+  canvas.show_missed = false;
+  EXPECT_EQ(canvas.picture_to_upload(s.controller), &s.controller.image());
+  canvas.reupload();  // a new session
+  EXPECT_EQ(canvas.picture_to_upload(s.controller), &s.controller.image());
+}
