@@ -1,0 +1,59 @@
+# How every GoogleTest executable is registered with ctest: one precompiled header shared by all
+# test programs, labels read from the source, and a timeout on every test.
+#
+# Labels (ctest -L / -LE):
+#   shared  the source reads ../shared (FIELDLINES_REQUIRE_SHARED): fails under CI without it
+#   window  a real studio window under Xvfb (registered by tests/studio with RESOURCE_LOCK)
+#   slow    the source says so on a line `// ctest-label: slow` (a program over ~30 s)
+# Timeouts: FIELDLINES_TEST_TIMEOUT seconds per test (a sanitized build runs ~3x slower, so the
+# asan preset raises it), so one hang ends its test instead of the CI budget.
+set(FIELDLINES_TEST_TIMEOUT 240 CACHE STRING "ctest timeout per test, seconds")
+
+# The heavy headers nearly every test includes. Tests keep their own includes: the PCH only
+# makes them cheap, so a test still builds with FIELDLINES_PCH=OFF (cmake/precompiled_headers.cmake).
+if(FIELDLINES_PCH AND NOT TARGET fieldlines_test_pch)
+  file(WRITE ${CMAKE_BINARY_DIR}/fieldlines_test_pch.cpp "// host of the shared test PCH\n")
+  add_library(fieldlines_test_pch OBJECT ${CMAKE_BINARY_DIR}/fieldlines_test_pch.cpp)
+  target_link_libraries(fieldlines_test_pch PRIVATE fieldlines::core fieldlines_warnings GTest::gtest)
+  target_precompile_headers(fieldlines_test_pch PRIVATE
+    <gtest/gtest.h> <opencv2/core.hpp> <opencv2/imgproc.hpp> <nlohmann/json.hpp>
+    <filesystem> <fstream> <functional> <map> <memory> <optional> <sstream> <string> <vector>)
+endif()
+
+# fieldlines_test_labels(<source> <out-var>): the labels the source declares or implies.
+function(fieldlines_test_labels source out)
+  set(labels "")
+  file(STRINGS ${source} uses_shared REGEX "FIELDLINES_REQUIRE_SHARED\\(")
+  if(uses_shared)
+    list(APPEND labels shared)
+  endif()
+  file(STRINGS ${source} declared REGEX "^// ctest-label: ")
+  foreach(line ${declared})
+    string(REGEX REPLACE "^// ctest-label: *" "" label "${line}")
+    list(APPEND labels ${label})
+  endforeach()
+  set(${out} ${labels} PARENT_SCOPE)
+endfunction()
+
+# fieldlines_add_gtest(<target> <source> [LABELS ...] [PROPERTIES ...]): registers the
+# program's tests with the labels, the timeout and any extra test properties.
+function(fieldlines_add_gtest target source)
+  cmake_parse_arguments(arg "" "PREFIX" "LABELS;PROPERTIES" ${ARGN})
+  if(TARGET fieldlines_test_pch)
+    target_precompile_headers(${target} REUSE_FROM fieldlines_test_pch)
+  endif()
+  fieldlines_test_labels(${source} labels)
+  list(APPEND labels ${arg_LABELS})
+  # gtest_discover_tests splits lists itself: escape the separators of a multi-label list.
+  string(REPLACE ";" "\\;" labels "${labels}")
+  set(label_property "")
+  if(labels)
+    set(label_property LABELS "${labels}")
+  endif()
+  set(prefix_args "")
+  if(arg_PREFIX)
+    set(prefix_args TEST_PREFIX ${arg_PREFIX})
+  endif()
+  gtest_discover_tests(${target} ${prefix_args} DISCOVERY_TIMEOUT 60
+                       PROPERTIES TIMEOUT ${FIELDLINES_TEST_TIMEOUT} ${label_property} ${arg_PROPERTIES})
+endfunction()
