@@ -4,10 +4,14 @@
 # Labels (ctest -L / -LE):
 #   shared  the source reads ../shared (FIELDLINES_REQUIRE_SHARED): fails under CI without it
 #   window  a real studio window under Xvfb (registered by tests/studio with RESOURCE_LOCK)
-#   slow    the source says so on a line `// ctest-label: slow` (a program over ~30 s)
+#   slow    the source says so on a line `// ctest-label: slow` (tests over ~30 s); they start
+#           first
 # Timeouts: FIELDLINES_TEST_TIMEOUT seconds per test (a sanitized build runs ~3x slower, so the
 # asan preset raises it), so one hang ends its test instead of the CI budget.
 set(FIELDLINES_TEST_TIMEOUT 240 CACHE STRING "ctest timeout per test, seconds")
+# Test code is compiled at -O1 whatever the build type: the libraries it calls keep their
+# optimisation, and -O3 on gtest's macro-heavy files costs most of a build's compile time.
+set(FIELDLINES_TEST_COMPILE_OPTIONS -O1)
 
 # The heavy headers nearly every test includes. Tests keep their own includes: the PCH only
 # makes them cheap, so a test still builds with FIELDLINES_PCH=OFF (cmake/precompiled_headers.cmake).
@@ -15,10 +19,19 @@ if(FIELDLINES_PCH AND NOT TARGET fieldlines_test_pch)
   file(WRITE ${CMAKE_BINARY_DIR}/fieldlines_test_pch.cpp "// host of the shared test PCH\n")
   add_library(fieldlines_test_pch OBJECT ${CMAKE_BINARY_DIR}/fieldlines_test_pch.cpp)
   target_link_libraries(fieldlines_test_pch PRIVATE fieldlines::core fieldlines_warnings GTest::gtest)
+  target_compile_options(fieldlines_test_pch PRIVATE ${FIELDLINES_TEST_COMPILE_OPTIONS})
   target_precompile_headers(fieldlines_test_pch PRIVATE
     <gtest/gtest.h> <opencv2/core.hpp> <opencv2/imgproc.hpp> <nlohmann/json.hpp>
     <filesystem> <fstream> <functional> <map> <memory> <optional> <sstream> <string> <vector>)
 endif()
+
+# fieldlines_test_code(<target>): compiled as test code (the options above, the shared PCH).
+function(fieldlines_test_code target)
+  target_compile_options(${target} PRIVATE ${FIELDLINES_TEST_COMPILE_OPTIONS})
+  if(TARGET fieldlines_test_pch)
+    target_precompile_headers(${target} REUSE_FROM fieldlines_test_pch)
+  endif()
+endfunction()
 
 # fieldlines_test_labels(<source> <out-var>): the labels the source declares or implies.
 function(fieldlines_test_labels source out)
@@ -39,11 +52,14 @@ endfunction()
 # program's tests with the labels, the timeout and any extra test properties.
 function(fieldlines_add_gtest target source)
   cmake_parse_arguments(arg "" "PREFIX" "LABELS;PROPERTIES" ${ARGN})
-  if(TARGET fieldlines_test_pch)
-    target_precompile_headers(${target} REUSE_FROM fieldlines_test_pch)
-  endif()
+  fieldlines_test_code(${target})
   fieldlines_test_labels(${source} labels)
   list(APPEND labels ${arg_LABELS})
+  # A clean build has no timings yet: start the slow programs first so they do not end the run.
+  set(cost_property "")
+  if(slow IN_LIST labels)
+    set(cost_property COST 100)
+  endif()
   # gtest_discover_tests splits lists itself: escape the separators of a multi-label list.
   string(REPLACE ";" "\\;" labels "${labels}")
   set(label_property "")
@@ -55,5 +71,6 @@ function(fieldlines_add_gtest target source)
     set(prefix_args TEST_PREFIX ${arg_PREFIX})
   endif()
   gtest_discover_tests(${target} ${prefix_args} DISCOVERY_TIMEOUT 60
-                       PROPERTIES TIMEOUT ${FIELDLINES_TEST_TIMEOUT} ${label_property} ${arg_PROPERTIES})
+                       PROPERTIES TIMEOUT ${FIELDLINES_TEST_TIMEOUT} ${label_property} ${cost_property}
+                       ${arg_PROPERTIES})
 endfunction()

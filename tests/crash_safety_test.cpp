@@ -1,6 +1,8 @@
 // Crash safety of the CLI's saves: `fieldlines train -o FILE` and `fieldlines autolabel -o
 // PROJECT` are killed with SIGKILL at random (seeded) moments, many times. After every kill the
 // file must be the old version byte for byte or a complete new one its loader accepts.
+// ctest-label: slow
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/inotify.h>

@@ -1,5 +1,7 @@
 // End to end on synthetic data: detect, autolabel from the exact ground truth, train the
 // thresholds on one seed, and score detection + classification on images of another seed.
+// ctest-label: slow
+
 #include <gtest/gtest.h>
 
 #include "fieldlines/detect/detector.hpp"

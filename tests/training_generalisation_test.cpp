@@ -2,6 +2,8 @@
 // seed and lighting condition must keep its precision on other seeds and conditions. With the
 // former objective (TP - FP) the exact optimum took in short segments that are only ~60 % true,
 // which the unseen images paid for (docs/training.md, "Precision on unseen images").
+// ctest-label: slow
+
 #include <cstdio>
 #include <vector>
 

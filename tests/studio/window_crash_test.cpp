@@ -5,6 +5,8 @@
 // images and segments, only the driven segment's label changed. The next start reopens it.
 // The review loop is killed the same way: P (propose), Enter (accept, with auto-train
 // retraining in the background and saving its thresholds) and Ctrl+Z, over and over.
+// ctest-label: slow
+
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -38,8 +40,7 @@ class StudioCrash : public studio_test::StudioUnderX {
   void SetUp() override {
     StudioUnderX::SetUp();
     // Large enough that a save takes milliseconds: 12 images x 400 segments.
-    project_ = studio_test::write_project(dir(), 12, 400, 640, 480);
-    segments_ = fieldlines::Project::load(project_).images[0].segments;
+    use_project(12, 400);
   }
   // Waits until a save's temporary file appears, then `in_save` more, and SIGKILLs the studio
   // (and the key sender) there.

@@ -27,10 +27,8 @@ class StudioKeysWindow : public studio_test::StudioUnderX {
  protected:
   void SetUp() override {
     StudioUnderX::SetUp();
-    project_ = studio_test::write_project(dir(), 1, 12, 640, 480);
-    segments_ = fieldlines::Project::load(project_).images[0].segments;
+    use_project(1, 12);
   }
-  nlohmann::json state() const { return studio_test::read_state(state_); }
   // Presses Tab and waits until the studio hovers the segment it chose; returns that segment.
   long tab_to_uncertain() {
     const auto before = state()["hovered"];

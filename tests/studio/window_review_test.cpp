@@ -2,6 +2,8 @@
 // Enter once per image, quit. Every segment ends up labelled, and the labels agree with the
 // frames' exact ground truth (as `fieldlines autolabel` gives it): 90.2 % on this set (seed 5,
 // 20 frames); asserted at 88 %, because other sets of our renderer give 85-89 % (docs/studio.md).
+// ctest-label: slow
+
 #include <gtest/gtest.h>
 
 #include <chrono>

@@ -3,6 +3,8 @@
 // (default 40; docs/studio.md's figure is from 600). Every second the studio must still be running;
 // its resident memory after warm-up must stay flat; at the end it quits cleanly (exit 0), the
 // project loads, and its log holds no error.
+// ctest-label: slow
+
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -40,10 +40,8 @@ class StudioWindow : public studio_test::StudioUnderX {
  protected:
   void SetUp() override {
     StudioUnderX::SetUp();
-    project_ = studio_test::write_project(dir(), 2, 12, 640, 480);
-    segments_ = fieldlines::Project::load(project_).images[0].segments;
+    use_project(2, 12);
   }
-  nlohmann::json state() const { return studio_test::read_state(state_); }
 };
 
 // Count of pixels within `tol` of an RGB colour along segment i's drawn line.

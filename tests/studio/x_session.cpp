@@ -124,6 +124,11 @@ void StudioUnderX::SetUp() {
   ASSERT_FALSE(display_.name.empty()) << "no free X display";
 }
 
+void StudioUnderX::use_project(int images, int segments) {
+  project_ = write_project(dir(), images, segments, 640, 480);
+  segments_ = fieldlines::Project::load(project_).images[0].segments;
+}
+
 std::unique_ptr<Child> StudioUnderX::start_studio() {
   fs::remove(state_);
   auto child = std::make_unique<Child>(

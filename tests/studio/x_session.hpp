@@ -69,6 +69,10 @@ class StudioUnderX : public ::testing::Test {
 
   void SetUp() override;
 
+  // Writes `images` synthetic 640x480 images with `segments` known segments each as the project
+  // start_studio() opens; segments_ holds the first image's.
+  void use_project(int images, int segments);
+  nlohmann::json state() const { return read_state(state_); }
   // Starts the studio on `project_` and waits until it has written its state file.
   std::unique_ptr<Child> start_studio();
   std::string log() const;
