@@ -125,7 +125,9 @@ TEST_F(CliBench, OneRoundHasNoSpread) {
   const fs::path out = dir_ / "bench.json";
   const CliRun r = run_cli({"bench", "--rounds", "1", "--quiet", "--json", out.string(), a.string()}, dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const auto& d : json::parse(read_text(out)).at("detectors")) {
+  // Named: a range-for over a temporary's member would read the freed document.
+  const json report = json::parse(read_text(out));
+  for (const auto& d : report.at("detectors")) {
     const json& ratio = d.at("ours_over_this");
     EXPECT_DOUBLE_EQ(ratio.at("min").get<double>(), ratio.at("worse").get<double>()) << d;
     EXPECT_DOUBLE_EQ(ratio.at("max").get<double>(), ratio.at("worse").get<double>()) << d;
