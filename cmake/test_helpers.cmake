@@ -48,6 +48,27 @@ function(fieldlines_test_labels source out)
   set(${out} ${labels} PARENT_SCOPE)
 endfunction()
 
+# fieldlines_label_discovered_tests(<target> <labels>): gtest_discover_tests flattens a list
+# value among its PROPERTIES (two labels become a label and a stray property), so the labels are
+# set by a ctest include file of this folder, read after every discovered test of it is known
+# (gtest_discover_tests names them in <target>_TESTS).
+function(fieldlines_label_discovered_tests target labels)
+  if(NOT labels)
+    return()
+  endif()
+  set(file ${CMAKE_CURRENT_BINARY_DIR}/fieldlines_test_labels.cmake)
+  get_property(started DIRECTORY PROPERTY FIELDLINES_TEST_LABELS_FILE SET)
+  if(NOT started)
+    file(WRITE ${file} "# Labels of the discovered tests (cmake/test_helpers.cmake)\n")
+    set_property(DIRECTORY PROPERTY FIELDLINES_TEST_LABELS_FILE ${file})
+    # Deferred to the end of the folder's CMakeLists, so it is read after every discovery file
+    # (EVAL: a deferred call's arguments are expanded when it runs, outside this function).
+    cmake_language(EVAL CODE
+      "cmake_language(DEFER CALL set_property DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES [[${file}]])")
+  endif()
+  file(APPEND ${file} "if(${target}_TESTS)\n  set_tests_properties(\${${target}_TESTS} PROPERTIES LABELS \"${labels}\")\nendif()\n")
+endfunction()
+
 # fieldlines_add_gtest(<target> <source> [LABELS ...] [PROPERTIES ...]): registers the
 # program's tests with the labels, the timeout and any extra test properties.
 function(fieldlines_add_gtest target source)
@@ -60,17 +81,11 @@ function(fieldlines_add_gtest target source)
   if(slow IN_LIST labels)
     set(cost_property COST 100)
   endif()
-  # gtest_discover_tests splits lists itself: escape the separators of a multi-label list.
-  string(REPLACE ";" "\\;" labels "${labels}")
-  set(label_property "")
-  if(labels)
-    set(label_property LABELS "${labels}")
-  endif()
   set(prefix_args "")
   if(arg_PREFIX)
     set(prefix_args TEST_PREFIX ${arg_PREFIX})
   endif()
   gtest_discover_tests(${target} ${prefix_args} DISCOVERY_TIMEOUT 60
-                       PROPERTIES TIMEOUT ${FIELDLINES_TEST_TIMEOUT} ${label_property} ${cost_property}
-                       ${arg_PROPERTIES})
+                       PROPERTIES TIMEOUT ${FIELDLINES_TEST_TIMEOUT} ${cost_property} ${arg_PROPERTIES})
+  fieldlines_label_discovered_tests(${target} "${labels}")
 endfunction()
