@@ -25,6 +25,7 @@ options:
                      "total": {...}}
   --gt ...           evaluate detections against synthetic ground truth instead (see
                      `fieldlines eval --gt --help`)
+  --hand ...         ... or against hand-drawn truth of real frames (same help)
   -h, --help         this help
 Exit codes: 0 ok, 2 usage or fatal error (a malformed DATA row names its file and line).
 
@@ -36,7 +37,7 @@ examples:
 
 bool wants_ground_truth(const Args& args) {
   for (const std::string& a : args)
-    if (a == "--gt" || a.rfind("--gt=", 0) == 0) return true;
+    if (a == "--gt" || a.rfind("--gt=", 0) == 0 || a == "--hand" || a.rfind("--hand=", 0) == 0) return true;
   return false;
 }
 

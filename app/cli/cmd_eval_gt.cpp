@@ -1,5 +1,6 @@
 // `fieldlines eval --gt DIR`: detection + classification scored against synthetic ground truth.
 #include <chrono>
+#include <functional>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -13,6 +14,7 @@
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/synth/gt_eval.hpp"
+#include "fieldlines/synth/hand_truth.hpp"
 #include "fieldlines/data/image_io.hpp"
 #include "fieldlines/synth/synth.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
@@ -25,10 +27,13 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kHelp = R"(usage: fieldlines eval --gt DIR [DIR...] [--thresholds FILE] [options]
+       fieldlines eval --hand DIR [DIR...] --data DATA [--thresholds FILE] [options]
 
 Detects and classifies the segments of every image of synthetic sets (made by `fieldlines
 synth`; each image's truth is DIR/truth/<name>.json) and scores them against the exact ground
-truth, per scene and lighting condition and pooled:
+truth, per scene and lighting condition and pooled. With --hand, the images are real frames
+under DATA and their truth is drawn by hand (DIR/<name>.json, schema fieldlines-hand-truth, as
+in tests/data/hand_truth); the rows are the folders. Scores:
   precision  predicted segments of a class whose truth label agrees (a segment's truth label is
              the class whose line edges it follows for >= 60% of its length, within 2.5 px and
              10 degrees; otherwise none)
@@ -37,6 +42,8 @@ truth, per scene and lighting condition and pooled:
 
 options:
   --gt DIR           a synthetic set (more sets as extra arguments)
+  --hand DIR         a folder of hand-truth files (more folders as extra arguments)
+  --data DATA        the folder the hand-truth files' "image" paths are relative to
   --thresholds FILE  detector parameters and thresholds (default: the built-in defaults)
   --max-distance PX  edge match distance (default 2.5)
   --min-width PX     painted parts narrower than this do not count in recall (default 1)
@@ -48,6 +55,7 @@ Exit codes: 0 ok, 1 some images could not be read (they are skipped), 2 usage or
 examples:
   fieldlines eval --gt synth/ssl_test
   fieldlines eval --gt synth/ssl_test synth/kid_test --thresholds robot.json --markdown
+  fieldlines eval --hand tests/data/hand_truth/msl-bangkok --data ../shared/data --thresholds msl.json
 )";
 
 struct Group {
@@ -75,7 +83,7 @@ void print_row(bool markdown, const std::string& scene, const std::string& condi
     std::printf("| %s | %s | %d | %s | %s | %s | %s | %ld | %.1f |\n", scene.c_str(), condition.c_str(), s.images,
                 mp.c_str(), mr.c_str(), bp.c_str(), br.c_str(), segments, ms);
   } else {
-    std::printf("%-5s %-11s %6d %9s %9s %10s %10s %9ld %9.1f\n", scene.c_str(), condition.c_str(), s.images,
+    std::printf("%-12s %-11s %6d %9s %9s %10s %10s %9ld %9.1f\n", scene.c_str(), condition.c_str(), s.images,
                 mp.c_str(), mr.c_str(), bp.c_str(), br.c_str(), segments, ms);
   }
 }
@@ -106,15 +114,53 @@ std::vector<SynthSetImage> list_synth_set(const fs::path& dir) {
   return out;
 }
 
+namespace {
+
+// One image to score: where it is, its truth, and the row it counts in.
+struct EvalItem {
+  fs::path image;
+  std::string row, condition;
+  std::function<synth::GroundTruth()> truth;  // loaded when scored, so a bad file skips one image
+};
+
+std::vector<EvalItem> synth_items(const std::vector<fs::path>& dirs) {
+  std::vector<EvalItem> items;
+  for (const fs::path& dir : dirs)
+    for (const auto& [image, truth_file] : list_synth_set(dir))
+      items.push_back({image, "", "", [file = truth_file] { return synth::load_truth(file); }});
+  return items;
+}
+
+std::vector<EvalItem> hand_items(const std::vector<fs::path>& dirs, const fs::path& data) {
+  std::vector<EvalItem> items;
+  for (const fs::path& dir : dirs) {
+    fs::path normal = dir.lexically_normal();
+    if (normal.filename().empty()) normal = normal.parent_path();  // "dir/" names "dir"
+    const std::string row = normal.filename().string();
+    for (const fs::path& file : synth::list_hand_truth(dir)) {
+      const synth::HandTruth hand = synth::load_hand_truth(file);
+      items.push_back({data / hand.image, row, "hand", [truth = hand.truth] { return truth; }});
+    }
+  }
+  return items;
+}
+
+}  // namespace
+
 int cmd_eval_gt(const Args& args) {
-  const auto parsed =
-      parse_or_print_help(args, {"--gt", "--thresholds", "--max-distance", "--min-width", "--json"}, {"--markdown"}, kHelp);
+  const auto parsed = parse_or_print_help(
+      args, {"--gt", "--hand", "--data", "--thresholds", "--max-distance", "--min-width", "--json"}, {"--markdown"},
+      kHelp);
   if (!parsed) return 0;
   const ParsedArgs& a = *parsed;
+  const bool hand = a.value("--hand").has_value();
+  if (hand && a.value("--gt")) throw Error("--gt and --hand cannot be mixed");
   std::vector<fs::path> dirs;
-  if (const auto gt = a.value("--gt")) dirs.emplace_back(*gt);
+  if (const auto gt = a.value(hand ? "--hand" : "--gt")) dirs.emplace_back(*gt);
   for (const std::string& p : a.positionals()) dirs.emplace_back(p);
-  if (dirs.empty()) throw Error("--gt DIR is required (see fieldlines eval --gt --help)");
+  if (dirs.empty()) throw Error("--gt DIR or --hand DIR is required (see fieldlines eval --gt --help)");
+  const auto data = a.value("--data");
+  if (hand && !data) throw Error("--hand needs --data DATA, the folder its image paths are relative to");
   const auto json_path = output_path(a, "--json");  // checked before the detection runs
   ThresholdsFile file;
   if (const auto t = a.value("--thresholds")) file = load_thresholds_file(*t);
@@ -123,26 +169,27 @@ int cmd_eval_gt(const Args& args) {
   match.min_width_px = static_cast<float>(a.double_or("--min-width", match.min_width_px, 0, 100));
   const bool markdown = a.flag("--markdown");
 
+  const std::vector<EvalItem> items = hand ? hand_items(dirs, *data) : synth_items(dirs);
   LineDetector detector(file.detector, file.thresholds);
   std::map<std::pair<std::string, std::string>, Group> groups;
   Group total;
   int failed = 0;
-  for (const fs::path& dir : dirs) {
-    for (const auto& [image, truth_file] : list_synth_set(dir)) {
-      try {
-        const synth::GroundTruth truth = synth::load_truth(truth_file);
-        const cv::Mat img = load_image(image);
-        const auto start = std::chrono::steady_clock::now();
-        const std::vector<Segment> segments = detector.detect(img);
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        const GtScore score = GtEdges(truth, match).score(segments);
-        Group& g = groups[{std::string(synth::to_string(truth.scene)), std::string(synth::to_string(truth.condition))}];
-        g.score += score, g.detect_ms += ms;
-        total.score += score, total.detect_ms += ms;
-      } catch (const Error& e) {
-        std::fprintf(stderr, "fieldlines eval: %s\n", e.what());
-        ++failed;
-      }
+  for (const EvalItem& item : items) {
+    try {
+      const synth::GroundTruth truth = item.truth();
+      const cv::Mat img = load_image(item.image);
+      const auto start = std::chrono::steady_clock::now();
+      const std::vector<Segment> segments = detector.detect(img);
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      const GtScore score = GtEdges(truth, match).score(segments);
+      const std::string row = hand ? item.row : std::string(synth::to_string(truth.scene));
+      const std::string condition = hand ? item.condition : std::string(synth::to_string(truth.condition));
+      Group& g = groups[{row, condition}];
+      g.score += score, g.detect_ms += ms;
+      total.score += score, total.detect_ms += ms;
+    } catch (const Error& e) {
+      std::fprintf(stderr, "fieldlines eval: %s\n", e.what());
+      ++failed;
     }
   }
   if (total.score.images == 0) throw Error("no image with ground truth found in the given folders");
@@ -151,7 +198,7 @@ int cmd_eval_gt(const Args& args) {
     std::printf("| scene | condition | images | marking precision | marking recall | boundary precision | "
                 "boundary recall | segments | detect ms |\n|---|---|---|---|---|---|---|---|---|\n");
   } else {
-    std::printf("%-5s %-11s %6s %9s %9s %10s %10s %9s %9s\n", "scene", "condition", "images", "mark P", "mark R",
+    std::printf("%-12s %-11s %6s %9s %9s %10s %10s %9s %9s\n", "scene", "condition", "images", "mark P", "mark R",
                 "bound P", "bound R", "segments", "det ms");
   }
   nlohmann::json out = {{"groups", nlohmann::json::array()}};

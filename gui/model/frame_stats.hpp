@@ -3,6 +3,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "fieldlines/train/percentile.hpp"
+
 namespace fieldlines::studio {
 
 class FrameStats {
@@ -22,6 +24,6 @@ class FrameStats {
   std::vector<double> samples_;
 };
 
-double median(std::vector<double> values);  // 0 when empty; mean of the two middles when even
+using fieldlines::median;  // 0 when empty; mean of the two middles when even
 
 }  // namespace fieldlines::studio

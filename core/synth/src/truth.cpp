@@ -113,21 +113,6 @@ std::vector<std::vector<TruthPoint>> trace(double length, double step, const Cam
   return runs;
 }
 
-template <typename T>
-T get(const json& j, const char* key, const std::string& context) {
-  if (!j.is_object() || !j.contains(key)) throw Error(context + ": missing field '" + key + "'");
-  try {
-    return j.at(key).get<T>();
-  } catch (const json::exception&) {
-    throw Error(context + ": field '" + key + "' has the wrong type");
-  }
-}
-
-double finite(double v, const char* key, const std::string& context) {
-  if (!std::isfinite(v)) throw Error(context + ": field '" + key + "' is not a finite number");
-  return v;
-}
-
 }  // namespace
 
 double TruthFeature::length_px() const {
@@ -216,52 +201,58 @@ json to_json(const GroundTruth& t) {
   return j;
 }
 
+std::vector<TruthPoint> truth_points_from_json(const json& feature, const std::string& ctx) {
+  const auto pts = json_field<std::vector<std::vector<double>>>(feature, "points", ctx);
+  if (pts.size() < 2) throw Error(ctx + ": needs at least 2 points");
+  std::vector<TruthPoint> out;
+  for (const auto& p : pts) {
+    if (p.size() != 3) throw Error(ctx + ": each point must be [x, y, width_px]");
+    for (const double v : p)
+      if (!std::isfinite(v)) throw Error(ctx + ": point with a non-finite number");
+    out.push_back({static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
+  }
+  return out;
+}
+
 GroundTruth truth_from_json(const json& j, const std::string& ctx) {
   require_json_file_format(j, kFormat, ctx);
   GroundTruth t;
-  t.image = get<std::string>(j, "image", ctx);
-  t.mask = get<std::string>(j, "mask", ctx);
+  t.image = json_field<std::string>(j, "image", ctx);
+  t.mask = json_field<std::string>(j, "mask", ctx);
   try {
-    t.scene = parse_scene(get<std::string>(j, "scene", ctx));
-    t.condition = parse_condition(get<std::string>(j, "condition", ctx));
+    t.scene = parse_scene(json_field<std::string>(j, "scene", ctx));
+    t.condition = parse_condition(json_field<std::string>(j, "condition", ctx));
   } catch (const Error& e) {
     throw Error(ctx + ": " + e.what());
   }
-  t.seed = get<std::uint64_t>(j, "seed", ctx);
-  t.index = get<int>(j, "index", ctx);
-  t.line_width = finite(get<double>(j, "line_width_m", ctx), "line_width_m", ctx);
-  const json cam = get<json>(j, "camera", ctx);
+  t.seed = json_field<std::uint64_t>(j, "seed", ctx);
+  t.index = json_field<int>(j, "index", ctx);
+  t.line_width = finite_field(json_field<double>(j, "line_width_m", ctx), "line_width_m", ctx);
+  const json cam = json_field<json>(j, "camera", ctx);
   const std::string cctx = ctx + ": camera";
-  t.intrinsics.width = get<int>(cam, "width", cctx);
-  t.intrinsics.height = get<int>(cam, "height", cctx);
-  t.intrinsics.fx = finite(get<double>(cam, "fx", cctx), "fx", cctx);
-  t.intrinsics.fy = finite(get<double>(cam, "fy", cctx), "fy", cctx);
-  t.intrinsics.cx = finite(get<double>(cam, "cx", cctx), "cx", cctx);
-  t.intrinsics.cy = finite(get<double>(cam, "cy", cctx), "cy", cctx);
-  const auto pos = get<std::vector<double>>(cam, "position", cctx);
+  t.intrinsics.width = json_field<int>(cam, "width", cctx);
+  t.intrinsics.height = json_field<int>(cam, "height", cctx);
+  t.intrinsics.fx = finite_field(json_field<double>(cam, "fx", cctx), "fx", cctx);
+  t.intrinsics.fy = finite_field(json_field<double>(cam, "fy", cctx), "fy", cctx);
+  t.intrinsics.cx = finite_field(json_field<double>(cam, "cx", cctx), "cx", cctx);
+  t.intrinsics.cy = finite_field(json_field<double>(cam, "cy", cctx), "cy", cctx);
+  const auto pos = json_field<std::vector<double>>(cam, "position", cctx);
   if (pos.size() != 3) throw Error(cctx + ": 'position' must have 3 numbers");
-  t.pose.position = {finite(pos[0], "position", cctx), finite(pos[1], "position", cctx),
-                     finite(pos[2], "position", cctx)};
-  t.pose.yaw = finite(get<double>(cam, "yaw_deg", cctx), "yaw_deg", cctx) / kRad;
-  t.pose.pitch = finite(get<double>(cam, "pitch_deg", cctx), "pitch_deg", cctx) / kRad;
-  t.pose.roll = finite(get<double>(cam, "roll_deg", cctx), "roll_deg", cctx) / kRad;
-  const auto features = get<json>(j, "features", ctx);
+  t.pose.position = {finite_field(pos[0], "position", cctx), finite_field(pos[1], "position", cctx),
+                     finite_field(pos[2], "position", cctx)};
+  t.pose.yaw = finite_field(json_field<double>(cam, "yaw_deg", cctx), "yaw_deg", cctx) / kRad;
+  t.pose.pitch = finite_field(json_field<double>(cam, "pitch_deg", cctx), "pitch_deg", cctx) / kRad;
+  t.pose.roll = finite_field(json_field<double>(cam, "roll_deg", cctx), "roll_deg", cctx) / kRad;
+  const auto features = json_field<json>(j, "features", ctx);
   if (!features.is_array()) throw Error(ctx + ": 'features' must be an array");
   for (std::size_t i = 0; i < features.size(); ++i) {
     const std::string fctx = ctx + ": features[" + std::to_string(i) + "]";
     TruthFeature f;
-    const auto label = get<std::string>(features[i], "label", fctx);
+    const auto label = json_field<std::string>(features[i], "label", fctx);
     if (!parse_label(label, f.label) || (f.label != Label::Marking && f.label != Label::Boundary))
       throw Error(fctx + ": label must be 'marking' or 'boundary', got '" + label + "'");
-    f.name = get<std::string>(features[i], "name", fctx);
-    const auto pts = get<std::vector<std::vector<double>>>(features[i], "points", fctx);
-    if (pts.size() < 2) throw Error(fctx + ": needs at least 2 points");
-    for (const auto& p : pts) {
-      if (p.size() != 3) throw Error(fctx + ": each point must be [x, y, width_px]");
-      for (const double v : p)
-        if (!std::isfinite(v)) throw Error(fctx + ": point with a non-finite number");
-      f.points.push_back({static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
-    }
+    f.name = json_field<std::string>(features[i], "name", fctx);
+    f.points = truth_points_from_json(features[i], fctx);
     t.features.push_back(std::move(f));
   }
   return t;

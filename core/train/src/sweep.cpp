@@ -6,13 +6,6 @@
 
 namespace fieldlines {
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 std::vector<SweepCell> run_sweep(const LabelledSet& data, const SweepParams& p,
                                  const std::function<void(int, int)>& on_run, std::stop_token stop) {
   if (p.seeds < 1) throw Error("sweep needs at least one seed");

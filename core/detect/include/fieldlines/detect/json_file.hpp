@@ -2,6 +2,7 @@
 // Reading our versioned JSON files (project, thresholds, synthetic ground truth): parsing with a
 // user-facing error, and the one check of a file's type name and version that every reader runs
 // before it trusts any other field.
+#include <cmath>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -59,6 +60,24 @@ inline int require_json_file_format(const nlohmann::json& j, const JsonFileForma
   }
   if (version < 1) throw Error(where + ": invalid " + f.noun + " version " + n);
   return static_cast<int>(version);
+}
+
+// The field `key` of object `j` as a T; throws Error "<where>: missing field 'key'" or "...: field
+// 'key' has the wrong type".
+template <typename T>
+T json_field(const nlohmann::json& j, const char* key, const std::string& where) {
+  if (!j.is_object() || !j.contains(key)) throw Error(where + ": missing field '" + key + "'");
+  try {
+    return j.at(key).get<T>();
+  } catch (const nlohmann::json::exception&) {
+    throw Error(where + ": field '" + key + "' has the wrong type");
+  }
+}
+
+// `v` unchanged; throws Error "<where>: field 'key' is not a finite number" for NaN or infinity.
+inline double finite_field(double v, const char* key, const std::string& where) {
+  if (!std::isfinite(v)) throw Error(where + ": field '" + key + "' is not a finite number");
+  return v;
 }
 
 }  // namespace fieldlines

@@ -63,6 +63,9 @@ std::vector<TruthFeature> extract_features(const World& world, const Camera& cam
                                            const TruthParams& params = {});
 
 nlohmann::json to_json(const GroundTruth& truth);
+// The "points" of one feature object, [[x, y, width_px], ...], at least 2, all finite; throws
+// fieldlines::Error naming `context`. Shared with the hand-made truth (hand_truth.hpp).
+std::vector<TruthPoint> truth_points_from_json(const nlohmann::json& feature, const std::string& context);
 // Throws fieldlines::Error naming `context` (e.g. the file) and the bad field.
 GroundTruth truth_from_json(const nlohmann::json& json, const std::string& context);
 // Files: load throws fieldlines::Error on unreadable or malformed files; save is atomic.

@@ -5,6 +5,8 @@
 #include <stop_token>
 #include <vector>
 
+#include "fieldlines/train/percentile.hpp"
+
 #include "fieldlines/data/labelled_set.hpp"
 #include "fieldlines/train/metrics.hpp"
 #include "fieldlines/train/splits.hpp"
@@ -29,7 +31,5 @@ struct SweepCell {
 // `on_run(done, total)` after each training run. Throws fieldlines::Error on bad fractions.
 std::vector<SweepCell> run_sweep(const LabelledSet& data, const SweepParams& params,
                                  const std::function<void(int, int)>& on_run = {}, std::stop_token stop = {});
-
-double median(std::vector<double> values);
 
 }  // namespace fieldlines
