@@ -117,7 +117,7 @@ TEST_F(SynthCli, AutolabelAndEvalAgainstTruth) {
   EXPECT_NE(csv.find(",False,True,False"), std::string::npos);  // some marking rows
   const CliRun eval = run("eval --gt " + set.string() + " --json " + (dir_ / "score.json").string(), dir_);
   ASSERT_EQ(eval.code, 0) << eval.err;
-  EXPECT_NE(eval.out.find("ssl   artificial       3"), std::string::npos) << eval.out;
+  EXPECT_NE(eval.out.find("ssl          artificial       3"), std::string::npos) << eval.out;
   EXPECT_TRUE(fs::exists(dir_ / "score.json"));
   // A folder without ground truth is a fatal error naming the folder.
   fs::create_directories(dir_ / "empty");
