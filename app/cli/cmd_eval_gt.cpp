@@ -1,8 +1,8 @@
 // `fieldlines eval --gt DIR`: detection + classification scored against synthetic ground truth.
 #include <chrono>
-#include <functional>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -117,17 +117,23 @@ std::vector<SynthSetImage> list_synth_set(const fs::path& dir) {
 namespace {
 
 // One image to score: where it is, its truth, and the row it counts in.
-struct EvalItem {
+struct EvalImage {
   fs::path image;
+  synth::GroundTruth truth;
   std::string row, condition;
-  std::function<synth::GroundTruth()> truth;  // loaded when scored, so a bad file skips one image
 };
+// Loaded when scored, so a bad truth file skips its image (exit 1) and the others go on.
+using EvalItem = std::function<EvalImage()>;
 
 std::vector<EvalItem> synth_items(const std::vector<fs::path>& dirs) {
   std::vector<EvalItem> items;
   for (const fs::path& dir : dirs)
     for (const auto& [image, truth_file] : list_synth_set(dir))
-      items.push_back({image, "", "", [file = truth_file] { return synth::load_truth(file); }});
+      items.push_back([image = image, file = truth_file] {
+        synth::GroundTruth truth = synth::load_truth(file);
+        std::string row(synth::to_string(truth.scene)), condition(synth::to_string(truth.condition));
+        return EvalImage{image, std::move(truth), std::move(row), std::move(condition)};
+      });
   return items;
 }
 
@@ -136,11 +142,11 @@ std::vector<EvalItem> hand_items(const std::vector<fs::path>& dirs, const fs::pa
   for (const fs::path& dir : dirs) {
     fs::path normal = dir.lexically_normal();
     if (normal.filename().empty()) normal = normal.parent_path();  // "dir/" names "dir"
-    const std::string row = normal.filename().string();
-    for (const fs::path& file : synth::list_hand_truth(dir)) {
-      const synth::HandTruth hand = synth::load_hand_truth(file);
-      items.push_back({data / hand.image, row, "hand", [truth = hand.truth] { return truth; }});
-    }
+    for (const fs::path& file : synth::list_hand_truth(dir))
+      items.push_back([file, data, row = normal.filename().string()] {
+        synth::HandTruth hand = synth::load_hand_truth(file);
+        return EvalImage{data / hand.image, std::move(hand.truth), row, "hand"};
+      });
   }
   return items;
 }
@@ -174,17 +180,15 @@ int cmd_eval_gt(const Args& args) {
   std::map<std::pair<std::string, std::string>, Group> groups;
   Group total;
   int failed = 0;
-  for (const EvalItem& item : items) {
+  for (const EvalItem& load : items) {
     try {
-      const synth::GroundTruth truth = item.truth();
+      const EvalImage item = load();
       const cv::Mat img = load_image(item.image);
       const auto start = std::chrono::steady_clock::now();
       const std::vector<Segment> segments = detector.detect(img);
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      const GtScore score = GtEdges(truth, match).score(segments);
-      const std::string row = hand ? item.row : std::string(synth::to_string(truth.scene));
-      const std::string condition = hand ? item.condition : std::string(synth::to_string(truth.condition));
-      Group& g = groups[{row, condition}];
+      const GtScore score = GtEdges(item.truth, match).score(segments);
+      Group& g = groups[{item.row, item.condition}];
       g.score += score, g.detect_ms += ms;
       total.score += score, total.detect_ms += ms;
     } catch (const Error& e) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/train/percentile.hpp"
 
 namespace fieldlines {
 namespace {
@@ -25,16 +26,6 @@ double achromatic_angle_deg(const ColourClass& c) {
   double cosine = (v[0] + v[1] + v[2]) / (nv * std::sqrt(3.0));
   if (c.two_sided) cosine = std::abs(cosine);
   return std::acos(std::clamp(cosine, -1.0, 1.0)) * kDeg;
-}
-
-// Linear interpolation between order statistics (numpy's default percentile).
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const double pos = p / 100.0 * double(v.size() - 1);
-  const std::size_t lo = static_cast<std::size_t>(pos);
-  const std::size_t hi = std::min(lo + 1, v.size() - 1);
-  return v[lo] + (pos - double(lo)) * (v[hi] - v[lo]);
 }
 
 // The gradient across the segment: along its normal, so the part along the line (noise) is gone.
