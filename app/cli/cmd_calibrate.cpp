@@ -37,13 +37,15 @@ PATH is an image, a folder of images, a video (every N-th frame), a project file
 CSV (its label columns may be missing). Images and videos are detected with the detector
 parameters of --thresholds (default: built-in).
 
-A class the images do not show (no boundary wall, say) is disabled and reported. When the
-markings cannot be fitted (no green field, too few segments, no colour mode apart from grey
-edges), it says why, exits with 2 and writes nothing.
+A class the images do not show (no boundary wall, say) is disabled and reported; a weak fit
+(few edges, classes that overlap) is kept with a warning. When the markings cannot be fitted
+(too few segments, no edge of their colours apart from grey edges), it says why and what to do,
+exits with 2 and writes no thresholds file (--json still gets the report, with "refused").
 
 options:
   -o, --output FILE   thresholds file to write (atomically)
-  --json REPORT       also write the fit's figures (per class: mode, spread, mass, separation)
+  --json REPORT       also write the fit's figures (per class: mode, spread, mass, contrasts,
+                      expected precision and recall, warning; "refused" when it refuses)
   --every N           from a video, take every N-th frame (default 10)
   --thresholds FILE   detector parameters and colour classes to start from (default: built-in)
   --quiet             no summary on stdout, no progress on stderr
@@ -138,6 +140,7 @@ void show_class(const char* name, const ClassCalibration& c, const ClassThreshol
   std::printf("%-9s min projection %8.3f  max angle %7.3f deg  min length %8.3f"
               "   (mode %.2f +- %.2f deg, %.0f segments)\n",
               name, t.min_projection, t.max_angle_deg, t.min_length, c.mean_deg, c.sd_deg, c.class_mass);
+  if (!c.warning.empty()) std::printf("%-9s warning: %s\n", "", c.warning.c_str());
 }
 
 }  // namespace
@@ -161,27 +164,36 @@ int cmd_calibrate(const Args& args) {
   const Calibration fit = calibrate(in.segments, config.thresholds);
   const double fit_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
   const double gather_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-  // Throws (exit 2, nothing written) when the markings were refused.
+  nlohmann::json p = calibration_provenance(fit);
+  p["inputs"] = a.positionals();
+  p["counts"] = {{"segments", in.segments.size()}, {"images", in.images}, {"failed_inputs", in.failed}};
+  // No date: the same input gives the same bytes.
+  p["fieldlines_version"] = FIELDLINES_VERSION;
+  const auto write_report = [&](nlohmann::json r) {
+    if (!report) return;
+    r["detect_ms"] = gather_ms;
+    r["fit_ms"] = fit_ms;
+    write_output_file(*report, r.dump(2) + "\n");
+  };
+  if (!fit.marking.thresholds) {
+    // The report still says why, for the studio and scripts; the thresholds file is not written.
+    nlohmann::json r = p;
+    r["refused"] = fit.marking.refused;
+    write_report(r);
+  }
+  // Throws (exit 2, no thresholds file) when the markings were refused.
   const Thresholds thresholds = calibrated_thresholds(fit, config.thresholds);
 
   ThresholdsFile file;
   file.detector = config.detector;
   file.thresholds = thresholds;
-  nlohmann::json& p = file.provenance;
-  p = calibration_provenance(fit);
-  p["inputs"] = a.positionals();
-  p["counts"] = {{"segments", in.segments.size()}, {"images", in.images}, {"failed_inputs", in.failed}};
-  // No date: the same input gives the same bytes.
-  p["fieldlines_version"] = FIELDLINES_VERSION;
+  file.provenance = p;
   save_thresholds_file(output, file);
-  if (report) {
-    nlohmann::json r = p;
-    r["thresholds_file"] = output.string();
-    r["thresholds"] = to_json(file)["classes"];
-    r["detect_ms"] = gather_ms;
-    r["fit_ms"] = fit_ms;
-    write_output_file(*report, r.dump(2) + "\n");
-  }
+  nlohmann::json r = p;
+  r["refused"] = nullptr;
+  r["thresholds_file"] = output.string();
+  r["thresholds"] = to_json(file)["classes"];
+  write_report(r);
 
   if (!quiet) {
     std::printf("%zu segments from %zu images; contrast floor %.2f\n", in.segments.size(), in.images,

@@ -4,18 +4,26 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/train/percentile.hpp"
+#include "class_mixture.hpp"
 
 namespace fieldlines {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = 180.0 / kPi;
+
+constexpr const char* kNoMarkings =
+    "no field markings seen: no edges of white paint on green apart from grey edges. Use frames that "
+    "show the field's lines, or label a few segments of each class in the studio";
+constexpr const char* kNoBoundary = "no dark field edge seen (a field without a black wall at its edge)";
 
 double norm3(const Rgb& g) { return std::sqrt(double(g[0]) * g[0] + double(g[1]) * g[1] + double(g[2]) * g[2]); }
 
@@ -42,98 +50,6 @@ double normal_gradient_norm(const Segment& s) {
   return std::sqrt(sum);
 }
 
-double gaussian(double x, double mean, double sd) {
-  const double z = (x - mean) / sd;
-  return std::exp(-0.5 * z * z) / (sd * std::sqrt(2 * kPi));
-}
-double cauchy(double x, double centre, double scale) {
-  const double d = x - centre;
-  return scale / (kPi * (scale * scale + d * d));
-}
-
-struct Mixture {
-  double mean = 0, sd = 1, scale = 1;    // class Gaussian; achromatic Cauchy's scale
-  double w_class = 0, w_achromatic = 0, w_uniform = 0;
-  double uniform = 0;                    // 1 / window width
-  double class_mass = 0;
-  int iterations = 0;
-};
-
-// EM over the angles `x` (all in [0, theta_a + window]). Empty when a component collapses.
-std::optional<Mixture> fit_mixture(const std::vector<double>& x, double theta_a, double x_max,
-                                   const CalibrationParams& params) {
-  std::vector<double> seed;
-  for (const double a : x)
-    if (a < theta_a - params.seed_margin_deg) seed.push_back(a);
-  if (seed.size() < 2) return std::nullopt;
-  const double n = double(x.size());
-  Mixture m;
-  m.mean = percentile(seed, 50);
-  std::vector<double> deviation;
-  for (const double a : seed) deviation.push_back(std::abs(a - m.mean));
-  m.sd = std::max(1.4826 * percentile(deviation, 50), 1.0);  // MAD as a normal sd
-  m.scale = 1;
-  m.w_class = 0.9 * double(seed.size()) / n;
-  m.w_achromatic = 0.9 - m.w_class;
-  m.w_uniform = 0.1;
-  m.uniform = 1.0 / x_max;
-  std::vector<double> r_class(x.size()), r_achromatic(x.size());
-  double previous = -INFINITY;
-  for (int it = 0; it < params.max_iterations; ++it) {
-    m.iterations = it + 1;
-    double log_likelihood = 0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      const double c = m.w_class * gaussian(x[i], m.mean, m.sd);
-      const double a = m.w_achromatic * cauchy(x[i], theta_a, m.scale);
-      const double total = c + a + m.w_uniform * m.uniform;
-      log_likelihood += std::log(total);
-      r_class[i] = c / total;
-      r_achromatic[i] = a / total;
-    }
-    double n_class = 0, n_achromatic = 0, sum = 0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      n_class += r_class[i];
-      n_achromatic += r_achromatic[i];
-      sum += r_class[i] * x[i];
-    }
-    if (n_class < 1) return std::nullopt;
-    // A set without a single grey edge (a clean synthetic field) keeps a trace of the grey
-    // component instead of failing: the cut then falls where the class's own tail ends.
-    n_achromatic = std::max(n_achromatic, 1e-3);
-    m.w_class = n_class / n;
-    m.w_achromatic = n_achromatic / n;
-    m.w_uniform = std::max(0.0, 1.0 - m.w_class - m.w_achromatic);
-    m.mean = sum / n_class;
-    double var = 0, scale2 = 0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      var += r_class[i] * (x[i] - m.mean) * (x[i] - m.mean);
-      // Student-t (nu = 1) EM: each point's latent precision weight.
-      const double z = (x[i] - theta_a) / m.scale;
-      scale2 += r_achromatic[i] * 2.0 / (1.0 + z * z) * (x[i] - theta_a) * (x[i] - theta_a);
-    }
-    m.sd = std::max(std::sqrt(var / n_class), 0.25);
-    m.scale = std::max(std::sqrt(scale2 / n_achromatic), 0.1);
-    m.class_mass = n_class;
-    if (std::abs(log_likelihood - previous) < params.tolerance * n) break;
-    previous = log_likelihood;
-  }
-  return m;
-}
-
-double class_posterior(const Mixture& m, double theta_a, double x) {
-  const double c = m.w_class * gaussian(x, m.mean, m.sd);
-  return c / (c + m.w_achromatic * cauchy(x, theta_a, m.scale) + m.w_uniform * m.uniform);
-}
-
-// The first angle right of the class mean (0.01 deg grid) where the class no longer dominates.
-std::optional<double> posterior_crossing(const Mixture& m, double theta_a) {
-  for (int step = 0;; ++step) {
-    const double x = m.mean + 0.01 * step;
-    if (x >= theta_a) return std::nullopt;
-    if (class_posterior(m, theta_a, x) <= 0.5) return x;
-  }
-}
-
 // The projection the weakest edge the detector accepts has at `angle_deg` from the transition,
 // its gradient at 45 degrees to the axes: the floor below which only noise is left.
 double projection_floor(double contrast_floor, double angle_deg) {
@@ -144,9 +60,41 @@ struct Measured {
   double angle, projection, length;
 };
 
+// The first angle right of the class mean (0.01 deg grid) where the class no longer dominates
+// the edges of log projection >= m_min; empty when it dominates up to the grey spike.
+std::optional<double> angle_cut(const detail::ClassMixture& m, double m_min) {
+  for (int step = 0;; ++step) {
+    const double a = m.class_angle.mean + 0.01 * step;
+    if (a >= m.theta_a) return std::nullopt;
+    if (m.posterior_at_angle(a, m_min) <= 0.5) return a;
+  }
+}
+
+// What the fit expects of a box over its rows: precision and recall from their responsibilities.
+struct BoxExpectation {
+  double precision = 0, recall = 0;
+  double f_half() const {  // F-0.5: precision weighs twice recall
+    const double d = 0.25 * precision + recall;
+    return d > 0 ? 1.25 * precision * recall / d : 0;
+  }
+};
+BoxExpectation expect_box(std::span<const detail::MixtureRow> rows, std::span<const double> responsibility,
+                          double a_cut, double m_cut) {
+  double inside = 0, inside_class = 0, class_total = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    class_total += responsibility[i];
+    if (rows[i].angle <= a_cut && rows[i].log_projection >= m_cut) {
+      inside += 1;
+      inside_class += responsibility[i];
+    }
+  }
+  return {inside > 0 ? inside_class / inside : 0, class_total > 0 ? inside_class / class_total : 0};
+}
+
+std::string count_text(double mass) { return std::to_string(static_cast<long>(std::lround(mass))); }
 
 ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass& cls, double contrast_floor,
-                           const CalibrationParams& params) {
+                           const CalibrationParams& params, const char* no_mode, bool use_contrast) {
   ClassCalibration out;
   out.achromatic_deg = achromatic_angle_deg(cls);
   const double theta_a = out.achromatic_deg;
@@ -155,48 +103,100 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   const double fit_floor = projection_floor(contrast_floor, theta_a);
   // Sorted, so that the sums of the EM (and so every bit of the result) do not depend on the
   // order the segments came in.
-  std::vector<std::pair<double, double>> kept;  // (angle, length)
+  std::vector<std::pair<detail::MixtureRow, double>> kept;  // (row, length)
   for (const Measured& r : rows)
-    if (r.projection >= fit_floor && r.angle <= x_max) kept.emplace_back(r.angle, r.length);
-  std::sort(kept.begin(), kept.end());
-  std::vector<double> x, length;
-  for (const auto& [angle, len] : kept) {
-    x.push_back(angle);
-    length.push_back(len);
-  }
+    if (r.projection >= fit_floor && r.projection > 0 && r.angle <= x_max)
+      kept.push_back({{r.angle, std::log(r.projection)}, r.length});
+  std::sort(kept.begin(), kept.end(), [](const auto& a, const auto& b) {
+    return std::tie(a.first.angle, a.first.log_projection, a.second) <
+           std::tie(b.first.angle, b.first.log_projection, b.second);
+  });
+  std::vector<detail::MixtureRow> x;
+  for (const auto& k : kept) x.push_back(k.first);
   out.fit_rows = x.size();
-  const std::optional<Mixture> m = fit_mixture(x, theta_a, x_max, params);
-  if (!m) {
-    out.refused = "no colour mode apart from grey edges (is there a green field in the images?)";
+  // The colours first: where they separate the class (its angle cut, the class's posterior at
+  // 1/2, lies min_separation sd right of its mean), that cut and the detector's noise floor.
+  // Otherwise, and only for a class whose contrast tells it from grey edges (white paint; a dark
+  // wall's foot is as dark as a robot's), the mixture over both features: the lowest projection
+  // floor whose box it expects target_precision pure, the angle where the class stops dominating
+  // edges that strong, never into the grey spike's core; where no floor reaches the target, the
+  // floor of the best expected F-0.5.
+  const detail::MixtureFitParams fit{params.seed_margin_deg, params.max_iterations, params.tolerance};
+  std::optional<detail::ClassMixture> m = detail::fit_class_mixture(x, theta_a, x_max, false, fit);
+  if (!m || m->class_mass < params.min_class_mass) {
+    out.class_mass = m ? m->class_mass : 0;
+    out.refused = m ? std::string(no_mode) + " (" + count_text(m->class_mass) + " edges of its colours, at least " +
+                          count_text(params.min_class_mass) + " needed)"
+                    : std::string(no_mode);
     return out;
   }
-  out.mean_deg = m->mean;
-  out.sd_deg = m->sd;
-  out.achromatic_scale_deg = m->scale;
+  const double angle_cap = theta_a - params.spike_margin_deg;
+  const auto log_floor_at = [&](double angle) {
+    return std::log(std::max(projection_floor(contrast_floor, angle), 1e-6));
+  };
+  const std::optional<double> colour_cut = angle_cut(*m, 0);
+  const bool colour_separates =
+      colour_cut && *colour_cut - m->class_angle.mean >= params.min_separation * m->class_angle.sd;
+  if (!colour_separates && !use_contrast) {
+    out.class_mass = m->class_mass;
+    out.refused = std::string(no_mode) + ": its edges cannot be told from grey edges";
+    return out;
+  }
+  if (!colour_separates) m = detail::fit_class_mixture(x, theta_a, x_max, true, fit);
+  if (!m) {
+    out.refused = std::string(no_mode);
+    return out;
+  }
+  out.used_contrast = !colour_separates;
+  out.mean_deg = m->class_angle.mean;
+  out.sd_deg = m->class_angle.sd;
+  out.achromatic_scale_deg = m->achromatic_scale;
   out.class_mass = m->class_mass;
   out.iterations = m->iterations;
-  const std::optional<double> cut = posterior_crossing(*m, theta_a);
-  if (!cut) {
-    out.refused = "the class's edges cannot be told from grey edges";
+  out.contrast_mean = std::exp(m->class_magnitude.mean);
+  out.grey_contrast_mean = std::exp(m->achromatic_magnitude.mean);
+  std::vector<double> responsibility(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) responsibility[i] = m->class_responsibility(x[i]);
+  const auto box_at = [&](double m_min) {  // (angle cut, projection floor at that angle)
+    const double a = std::min(angle_cut(*m, m_min).value_or(angle_cap), angle_cap);
+    return std::pair{a, std::max(m_min, log_floor_at(a))};
+  };
+  double a_cut = 0, m_cut = 0;
+  if (colour_separates) {
+    a_cut = *colour_cut;
+    m_cut = log_floor_at(a_cut);
+  } else {
+    std::tie(a_cut, m_cut) = box_at(log_floor_at(angle_cap));
+    double best_f = -1;
+    for (double m_try = m_cut; m_try <= m->class_magnitude.mean + m->class_magnitude.sd; m_try += 0.02) {
+      const auto [a_try, m_box] = box_at(m_try);
+      const BoxExpectation e = expect_box(x, responsibility, a_try, m_box);
+      const bool reached = e.precision >= params.target_precision;
+      if (reached || e.f_half() > best_f) a_cut = a_try, m_cut = m_box, best_f = e.f_half();
+      if (reached) break;
+    }
+  }
+  const BoxExpectation expected = expect_box(x, responsibility, a_cut, m_cut);
+  out.separation = (a_cut - m->class_angle.mean) / m->class_angle.sd;
+  if (!(expected.recall > 0)) {
+    out.refused = std::string(no_mode) + ": its edges cannot be told from grey edges, by colour or by contrast";
     return out;
   }
-  out.separation = (*cut - m->mean) / m->sd;
-  if (m->class_mass < params.min_class_mass) {
-    out.refused = "too few of its edges (" + std::to_string(static_cast<long>(std::lround(m->class_mass))) +
-                  ", at least " + std::to_string(static_cast<long>(params.min_class_mass)) + " needed)";
-    return out;
-  }
-  if (out.separation < params.min_separation) {
-    out.refused = "its edges are not separable from grey edges";
-    return out;
-  }
-  // The class's own shortest few: below them, clutter of the class's colour is all that is left.
+  out.expected_precision = expected.precision;
+  out.expected_recall = expected.recall;
   std::vector<double> member_length;
   for (std::size_t i = 0; i < x.size(); ++i)
-    if (class_posterior(*m, theta_a, x[i]) >= 0.5) member_length.push_back(length[i]);
+    if (responsibility[i] >= 0.5) member_length.push_back(kept[i].second);
+  if (m->class_mass < params.few_edges)
+    out.warning = "few edges of the class (" + count_text(m->class_mass) + "): calibrate on more frames";
+  else if (out.expected_precision < params.weak_precision)
+    out.warning = "the class overlaps grey edges (expected precision " +
+                  std::to_string(std::lround(100 * out.expected_precision)) +
+                  " %): review the proposals in the studio";
+  // The class's own shortest few: below them, clutter of the class's colour is all that is left.
   ClassThresholds t;
-  t.max_angle_deg = static_cast<float>(*cut);
-  t.min_projection = static_cast<float>(projection_floor(contrast_floor, *cut));
+  t.max_angle_deg = static_cast<float>(a_cut);
+  t.min_projection = static_cast<float>(std::exp(m_cut));
   t.min_length = static_cast<float>(percentile(member_length, params.length_percentile));
   out.thresholds = t;
   return out;
@@ -230,8 +230,8 @@ Calibration calibrate(std::span<const Segment> segments, const Thresholds& start
     marking.push_back({f.marking[m].angle_deg, f.marking[m].projection, f.length});
   }
   out.contrast_floor = percentile(normal_norms, params.floor_percentile);
-  out.marking = fit_class(marking, start.marking, out.contrast_floor, params);
-  out.boundary = fit_class(boundary, start.boundary, out.contrast_floor, params);
+  out.marking = fit_class(marking, start.marking, out.contrast_floor, params, kNoMarkings, true);
+  out.boundary = fit_class(boundary, start.boundary, out.contrast_floor, params, kNoBoundary, false);
   return out;
 }
 
@@ -250,9 +250,12 @@ nlohmann::json calibration_provenance(const Calibration& c) {
     return nlohmann::json{{"achromatic_deg", k.achromatic_deg}, {"mean_deg", k.mean_deg},
                           {"sd_deg", k.sd_deg}, {"achromatic_scale_deg", k.achromatic_scale_deg},
                           {"class_mass", k.class_mass}, {"separation", k.separation},
+                          {"used_contrast", k.used_contrast}, {"contrast_mean", k.contrast_mean}, {"grey_contrast_mean", k.grey_contrast_mean},
+                          {"expected_precision", k.expected_precision}, {"expected_recall", k.expected_recall},
                           {"fit_rows", k.fit_rows}, {"iterations", k.iterations},
                           {"fitted", k.thresholds.has_value()},
-                          {"refused", k.thresholds ? nlohmann::json(nullptr) : nlohmann::json(k.refused)}};
+                          {"refused", k.thresholds ? nlohmann::json(nullptr) : nlohmann::json(k.refused)},
+                          {"warning", k.warning.empty() ? nlohmann::json(nullptr) : nlohmann::json(k.warning)}};
   };
   return {{"method", "label-free"},
           {"contrast_floor", c.contrast_floor},

@@ -4,18 +4,24 @@
 // Why it works without labels: an achromatic edge (wall, robot, furniture, shadow) has a
 // gradient along (1,1,1), so its angle to a class's transition v = to - from is fixed by
 // geometry: theta_A = acos(v.(1,1,1) / (|v| sqrt 3)), 35.26 deg for green-to-white and 54.74 deg
-// for black-to-green. The class's own edges form a mode at smaller angles. Per class, a 1-D
-// mixture over the angle is fitted by EM:
-//   class      Gaussian (mean, sd), seeded from the rows below theta_A - seed_margin_deg;
-//   achromatic Cauchy centred at theta_A (fixed: it is physics) with a fitted scale;
-//   background uniform over [0, theta_A + window_deg].
-// max_angle_deg is where the class's posterior falls to 1/2, right of its mean.
-// min_projection is the projection the weakest edge the detector accepts can have inside that
-// cone (contrast floor * cos(max_angle) / sqrt 2, the floor being a low percentile of the
-// gradient norm normal to the segments), so noise along a segment cannot pass. min_length is a
+// for black-to-green. The class's own edges form a mode at smaller angles. Per class, a mixture
+// over the angle and the log projection is fitted by EM (class_mixture.hpp):
+//   class      Gaussian in both, seeded from the rows below theta_A - seed_margin_deg;
+//   achromatic Cauchy centred at theta_A (fixed: it is physics) times a Gaussian in contrast;
+//   background uniform over [0, theta_A + window_deg], broad in contrast.
+// The contrast matters where the field's colours are pale: the class's angle mode then runs into
+// the grey spike, and painted lines are still brighter edges than most grey clutter.
+// The box is where the class's posterior falls to 1/2: max_angle_deg right of its mean among
+// edges strong enough to pass, min_projection down from its mean contrast among edges inside the
+// angle, never below the projection the weakest edge the detector accepts has inside the cone
+// (contrast floor * cos(max_angle) / sqrt 2, the floor being a low percentile of the gradient
+// norm normal to the segments), and never into the spike's core. min_length is a
 // low percentile of the saliency of the class's own members (posterior >= 1/2): relative to
 // the class, because Humanoid markings are a third as long as SSL's, and low, because what
 // has the class's colour but is not the class (a warm-lit wall corner, a shirt) is short.
+//
+// A class is refused only when the data hold no mode of its colours at all; a fit that is
+// weak (few edges, a box the fit expects to be impure) is kept with a warning.
 //
 // Labels are never read. The result depends only on the set of segments, not on their order.
 #include <cstddef>
@@ -36,8 +42,12 @@ struct CalibrationParams {
   double seed_margin_deg = 3;       // the class's seed: angles below theta_A - margin
   double floor_percentile = 1;      // of the normal gradient norm: the detector's contrast floor
   double length_percentile = 2;     // of the class members' saliency: min_length
-  double min_class_mass = 30;       // segments the class must hold (EM mass)
-  double min_separation = 1;        // (max_angle - mean) / sd: the cut may not enter the core
+  double min_class_mass = 8;        // segments the class must hold (EM mass): fewer is no mode
+  double few_edges = 30;            // below this mass the fit is kept with a warning
+  double spike_margin_deg = 0.5;    // max_angle stays this far below theta_A
+  double min_separation = 1;        // (max_angle - mean) / sd at the noise floor: colour separates
+  double target_precision = 0.9;    // else the lowest projection floor whose box the fit expects this pure
+  double weak_precision = 0.8;      // expected precision below this: kept with a warning
   int max_iterations = 200;
   double tolerance = 1e-6;          // |delta log-likelihood| per point
 };
@@ -46,11 +56,17 @@ struct CalibrationParams {
 struct ClassCalibration {
   std::optional<ClassThresholds> thresholds;  // empty: refused (see `refused`)
   std::string refused;                        // why the data do not support a fit
+  std::string warning;                        // fitted, but weakly: what to do about it
   double achromatic_deg = 0;                  // theta_A, from the class's colours
   double mean_deg = 0, sd_deg = 0;            // the class's angle mode
   double achromatic_scale_deg = 0;            // the Cauchy's fitted scale
   double class_mass = 0;                      // segments the EM gives the class
   double separation = 0;                      // (max_angle - mean) / sd
+  bool used_contrast = false;                 // the colours did not separate: the contrast did
+  double contrast_mean = 0;                   // the class's typical projection (geometric mean)
+  double grey_contrast_mean = 0;              // the grey edges' typical projection
+  double expected_precision = 0;              // of the box, under the fitted mixture
+  double expected_recall = 0;
   std::size_t fit_rows = 0;                   // segments in the fit window
   int iterations = 0;
 };
@@ -75,7 +91,8 @@ Thresholds calibrated_thresholds(const Calibration& calibration, const Threshold
 
 // What every face (CLI, Python) records of a fit in the thresholds file's provenance:
 // {"method": "label-free", "contrast_floor", "fit": {"marking": {...}, "boundary": {...}}}, each
-// class with its mode, spread, mass, separation, rows, iterations, "fitted" and "refused".
+// class with its mode, spread, mass, separation, contrasts, expected precision and recall, rows,
+// iterations, "fitted", "refused" and "warning".
 nlohmann::json calibration_provenance(const Calibration& calibration);
 
 }  // namespace fieldlines
