@@ -120,6 +120,14 @@ TEST_F(Calibrate, BadInputIsAMessageExit2AndNoFile) {
     write_image("nofield/noise" + std::to_string(i) + ".png", noise);
   }
   refused({(dir_ / "nofield").string(), "-o", out.string()}, "cannot calibrate the field markings");
+  // The refusal says what to do, and --json still gets the report with the reason.
+  const fs::path report = dir_ / "fit.json";
+  refused({(dir_ / "nofield").string(), "-o", out.string(), "--json", report.string()}, "label a few segments");
+  ASSERT_TRUE(fs::exists(report));
+  const nlohmann::json fit = nlohmann::json::parse(read_text(report));
+  EXPECT_NE(fit["refused"].get<std::string>().find("too few segments (0"), std::string::npos) << fit.dump(2);
+  EXPECT_FALSE(fit["fit"]["marking"]["fitted"].get<bool>());
+  EXPECT_FALSE(fit.contains("thresholds_file"));
   // A CSV with 5 rows.
   std::string csv = "img_path,x0,y0,x1,y1,grad_Bx,grad_Gx,grad_Rx,grad_By,grad_Gy,grad_Ry,segment_length\n";
   for (int i = 0; i < 5; ++i) csv += "a.png,0,0,100," + std::to_string(i) + ",80,70,90,-30,-27,-35,120\n";

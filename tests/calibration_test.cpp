@@ -104,6 +104,48 @@ TEST(Calibration, RefusesWhatTheDataDoNotSupport) {
   EXPECT_EQ(score(no_wall, t).boundary.fp, 0);
 }
 
+// A pale field: the markings' angle mode runs into the grey spike (white balance off, a grey-
+// green carpet), so the colours alone do not separate them; their contrast does (painted lines
+// are brighter edges than the grey clutter). The fit must then use it, and stay pure.
+TEST(Calibration, UsesTheContrastWhereTheColoursDoNotSeparate) {
+  std::mt19937 rng(4);
+  std::normal_distribution<double> noise(0, 1);
+  std::uniform_real_distribution<double> strong(120, 220), weak(15, 60), length(60, 600);
+  std::vector<fl::Segment> segments;
+  int markings = 0;
+  for (int i = 0; i < 300; ++i, ++markings)
+    segments.push_back(fl::test::segment_with(fl::test::marking_gradient(strong(rng), 32.5 + 1.8 * noise(rng)),
+                                              float(length(rng)), fl::Label::Marking));
+  for (int i = 0; i < 900; ++i) {
+    const double m = weak(rng) * (i % 2 ? 1 : -1);
+    segments.push_back(fl::test::segment_with(fl::test::marking_gradient(m, 35.26 + 1.5 * noise(rng)),
+                                              float(length(rng)), fl::Label::None));
+  }
+  const fl::Calibration c = fl::calibrate(segments);
+  ASSERT_TRUE(c.marking.thresholds) << c.marking.refused;
+  EXPECT_TRUE(c.marking.used_contrast);
+  EXPECT_GT(c.marking.contrast_mean, 2 * c.marking.grey_contrast_mean);
+  EXPECT_GE(c.marking.thresholds->min_projection, 40.0f);  // above the grey clutter's contrast
+  const fl::Counts counts = score(segments, fl::calibrated_thresholds(c));
+  EXPECT_GE(counts.marking.precision(), 0.9);  // CalibrationParams::target_precision
+  EXPECT_GE(counts.marking.recall(), 0.6);
+  // The angle alone (the same set without the contrast cue) cannot tell them apart: no
+  // boundary wall is seen either, with the cause named.
+  EXPECT_FALSE(c.boundary.thresholds);
+  EXPECT_NE(c.boundary.refused.find("no dark field edge seen"), std::string::npos) << c.boundary.refused;
+}
+
+// A handful of marking edges is a weak fit, not a refusal: kept with a warning.
+TEST(Calibration, AFewMarkingEdgesCalibrateWithAWarning) {
+  fl::test::KnownField k = fl::test::known_field(9);
+  std::vector<fl::Segment> few(k.segments.begin(), k.segments.begin() + 15);
+  few.insert(few.end(), k.segments.begin() + k.markings + k.boundaries, k.segments.end());
+  const fl::Calibration c = fl::calibrate(few);
+  ASSERT_TRUE(c.marking.thresholds) << c.marking.refused;
+  EXPECT_NE(c.marking.warning.find("few edges"), std::string::npos) << c.marking.warning;
+  EXPECT_GE(score(few, fl::calibrated_thresholds(c)).marking.precision(), 0.9);
+}
+
 // The bars, on all rows of each of the authors' files with the labels stripped before
 // calibrating and used only for scoring.
 TEST(CalibrationShared, MeetsTheBarsOnTheAuthorsFilesWithoutTheirLabels) {

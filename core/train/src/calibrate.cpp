@@ -209,7 +209,9 @@ Calibration calibrate(std::span<const Segment> segments, const Thresholds& start
   out.segments = segments.size();
   if (segments.size() < params.min_segments) {
     const std::string why = "too few segments (" + std::to_string(segments.size()) + ", at least " +
-                            std::to_string(params.min_segments) + " needed)";
+                            std::to_string(params.min_segments) +
+                            " needed): use more frames that show the field, or label a few segments of each "
+                            "class in the studio";
     out.marking.refused = out.boundary.refused = why;
     out.marking.achromatic_deg = achromatic_angle_deg(start.marking);
     out.boundary.achromatic_deg = achromatic_angle_deg(start.boundary);
