@@ -139,8 +139,8 @@ long allocations_in_detect(LineDetector& detector, const cv::Mat& image, std::ve
 // Two warm-up passes, then every frame once more, counted; with the per-frame counts so a
 // failure names the frame.
 void expect_warm_detect_allocates_nothing(const std::vector<cv::Mat>& frames, const std::vector<std::string>& names,
-                                         const DetectorParams& params = {}) {
-  LineDetector detector(params);
+                                         const DetectorParams& params = {}, const Thresholds& thresholds = {}) {
+  LineDetector detector(params, thresholds);
   std::vector<Segment> out;
   // A cold detector does allocate, inside libfieldlines_detect: the counter sees the library.
   EXPECT_GT(allocations_in_detect(detector, frames.front(), out), 0);
@@ -207,6 +207,21 @@ TEST(DetectAllocations, NoneOnSyntheticFramesOfOneSize) {
     names.push_back("synthetic shift " + std::to_string(shift * 7));
   }
   expect_warm_detect_allocates_nothing(frames, names);
+}
+
+// The robot's per-frame light adaptation (light.hpp) measures the field colour on fixed-size
+// histograms: still nothing.
+TEST(DetectAllocations, NoneWithLightAdaptation) {
+  std::vector<cv::Mat> frames;
+  std::vector<std::string> names;
+  for (int shift = 0; shift < 4; ++shift) {
+    frames.push_back(test::synthetic_field(640, 480, shift * 5));
+    names.push_back("synthetic shift " + std::to_string(shift * 5));
+  }
+  ASSERT_TRUE(estimate_field_colour(frames.front())) << "the frames must show a field";
+  Thresholds t;
+  t.light = {true, {40, 120, 40}};
+  expect_warm_detect_allocates_nothing(frames, names, {}, t);
 }
 
 // With threads > 1 the workers start on the first detect and are woken per frame without a heap

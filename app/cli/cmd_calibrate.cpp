@@ -20,6 +20,7 @@
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
 #include "fieldlines/train/calibrate.hpp"
+#include "fieldlines/train/calibration_inputs.hpp"
 
 namespace fieldlines::cli {
 namespace {
@@ -42,12 +43,19 @@ A class the images do not show (no boundary wall, say) is disabled and reported;
 (too few segments, no edge of their colours apart from grey edges), it says why and what to do,
 exits with 2 and writes no thresholds file (--json still gets the report, with "refused").
 
+Light: each image's field colour (the median of its green pixels) is measured, every frame's
+gradients are scaled by one gain onto the median field brightness of all of them before the fit,
+and the file turns the same per-frame adaptation on for the robot ("light": {"adapt",
+"reference_field"}), so a frame in shade or against the light keeps its contrast thresholds.
+
 options:
   -o, --output FILE   thresholds file to write (atomically)
   --json REPORT       also write the fit's figures (per class: mode, spread, mass, contrasts,
                       expected precision and recall, warning; "refused" when it refuses)
   --every N           from a video, take every N-th frame (default 10)
   --thresholds FILE   detector parameters and colour classes to start from (default: built-in)
+  --no-light-adaptation
+                      do not map each frame onto one light by its field colour (see below)
   --quiet             no summary on stdout, no progress on stderr
   -h, --help          this help
 
@@ -58,15 +66,13 @@ examples:
 )";
 
 struct Inputs {
-  std::vector<Segment> segments;
+  CalibrationInputs data;
   std::size_t images = 0;  // images, frames, or image entries of a project / CSV
   int failed = 0;          // inputs that could not be read (reported, the rest went on)
 };
 
 void add_detected(Inputs& in, LineDetector& detector, const cv::Mat& image) {
-  std::vector<Segment> found;
-  detector.detect(image, found);
-  in.segments.insert(in.segments.end(), found.begin(), found.end());
+  in.data.add_image(detector, image);
   ++in.images;
 }
 
@@ -90,10 +96,9 @@ void add_video(Inputs& in, LineDetector& detector, const fs::path& path, int eve
 void add_data_file(Inputs& in, const std::string& path) {
   const Project project = load_data_as_project(path);
   for (const ImageEntry& image : project.images) {
-    for (Segment s : image.segments) {
-      s.label = Label::Unlabelled;
-      in.segments.push_back(s);
-    }
+    std::vector<Segment> unlabelled = image.segments;
+    for (Segment& s : unlabelled) s.label = Label::Unlabelled;
+    in.data.add_segments(unlabelled);
     ++in.images;
   }
 }
@@ -146,7 +151,7 @@ void show_class(const char* name, const ClassCalibration& c, const ClassThreshol
 }  // namespace
 
 int cmd_calibrate(const Args& args) {
-  const auto parsed = parse_or_print_help(args, {"-o", "--output", "--json", "--every", "--thresholds"}, {"--quiet"}, kHelp);
+  const auto parsed = parse_or_print_help(args, {"-o", "--output", "--json", "--every", "--thresholds"}, {"--quiet", "--no-light-adaptation"}, kHelp);
   if (!parsed) return 0;
   const ParsedArgs& a = *parsed;
   if (a.positionals().empty()) throw Error("expected at least one PATH (see --help)");
@@ -159,14 +164,18 @@ int cmd_calibrate(const Args& args) {
   if (const auto t = a.value("--thresholds")) config = load_thresholds_file(*t);
 
   const auto t0 = std::chrono::steady_clock::now();
-  const Inputs in = gather(a.positionals(), config, every, quiet);
+  Inputs in = gather(a.positionals(), config, every, quiet);
+  Thresholds start = config.thresholds;
+  start.light = {};
+  if (!a.flag("--no-light-adaptation")) start = in.data.adapt_light(start);
   const auto t1 = std::chrono::steady_clock::now();
-  const Calibration fit = calibrate(in.segments, config.thresholds);
+  const Calibration fit = calibrate(in.data.segments(), start);
   const double fit_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
   const double gather_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   nlohmann::json p = calibration_provenance(fit);
   p["inputs"] = a.positionals();
-  p["counts"] = {{"segments", in.segments.size()}, {"images", in.images}, {"failed_inputs", in.failed}};
+  p["counts"] = {{"segments", in.data.segments().size()}, {"images", in.images}, {"failed_inputs", in.failed},
+                 {"frames_with_field_colour", in.data.frames_with_field()}};
   // No date: the same input gives the same bytes.
   p["fieldlines_version"] = FIELDLINES_VERSION;
   const auto write_report = [&](nlohmann::json r) {
@@ -182,7 +191,7 @@ int cmd_calibrate(const Args& args) {
     write_report(r);
   }
   // Throws (exit 2, no thresholds file) when the markings were refused.
-  const Thresholds thresholds = calibrated_thresholds(fit, config.thresholds);
+  const Thresholds thresholds = calibrated_thresholds(fit, start);
 
   ThresholdsFile file;
   file.detector = config.detector;
@@ -196,8 +205,11 @@ int cmd_calibrate(const Args& args) {
   write_report(r);
 
   if (!quiet) {
-    std::printf("%zu segments from %zu images; contrast floor %.2f\n", in.segments.size(), in.images,
+    std::printf("%zu segments from %zu images; contrast floor %.2f\n", in.data.segments().size(), in.images,
                 fit.contrast_floor);
+    if (start.light.enabled)
+      std::printf("light: %zu frames mapped onto field colour (%.0f, %.0f, %.0f)\n", in.data.frames_with_field(),
+                  start.light.reference_field[0], start.light.reference_field[1], start.light.reference_field[2]);
     show_class("boundary", fit.boundary, thresholds.boundary.thresholds);
     show_class("marking", fit.marking, thresholds.marking.thresholds);
     std::printf("fit in %.1f ms; wrote %s\n", fit_ms, output.c_str());

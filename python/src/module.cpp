@@ -27,6 +27,7 @@
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
 #include "fieldlines/train/calibrate.hpp"
+#include "fieldlines/train/calibration_inputs.hpp"
 #include "json_dict.hpp"
 
 namespace py = pybind11;
@@ -166,19 +167,17 @@ py::dict calibrate_images(const py::object& images, const py::object& thresholds
   }
   Calibration fit;
   Thresholds calibrated;
-  std::vector<Segment> all;
+  CalibrationInputs inputs;
+  Thresholds adapted;
   {
     py::gil_scoped_release nogil;
     LineDetector detector(start.detector, start.thresholds);
-    std::vector<Segment> found;
-    for (const cv::Mat& view : views) {
-      detector.detect(view, found);
-      all.insert(all.end(), found.begin(), found.end());
-    }
-    fit = calibrate(all, start.thresholds);
+    for (const cv::Mat& view : views) inputs.add_image(detector, view);
+    adapted = inputs.adapt_light(start.thresholds);
+    fit = calibrate(inputs.segments(), adapted);
   }
   try {
-    calibrated = calibrated_thresholds(fit, start.thresholds);
+    calibrated = calibrated_thresholds(fit, adapted);
   } catch (const Error& e) {
     throw py::value_error(std::string("calibration refused: ") + e.what());
   }
@@ -188,7 +187,8 @@ py::dict calibrate_images(const py::object& images, const py::object& thresholds
   nlohmann::json& p = file.provenance;
   p = calibration_provenance(fit);
   p["inputs"] = "python: fieldlines.calibrate";
-  p["counts"] = {{"segments", all.size()}, {"images", views.size()}};
+  p["counts"] = {{"segments", inputs.segments().size()}, {"images", views.size()},
+                 {"frames_with_field_colour", inputs.frames_with_field()}};
   p["fieldlines_version"] = FIELDLINES_VERSION;
   return thresholds_dict(file);
 }

@@ -1,5 +1,6 @@
 #include "fieldlines/detect/detector.hpp"
 
+#include <optional>
 #include <string>
 
 #include <opencv2/imgproc.hpp>
@@ -58,6 +59,9 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   const cv::Mat* bgr = normalise(image);
   if (!bgr) return;
   impl_->engine.run(*bgr, params_, out);
+  if (thresholds_.light.enabled)
+    if (const std::optional<Rgb> field = estimate_field_colour(*bgr))
+      apply_light_gain(out, light_gain(thresholds_.light.reference_field, *field));
   classify_all(out, thresholds_);
 }
 

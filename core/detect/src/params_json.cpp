@@ -119,9 +119,12 @@ DetectorParams detector_params_from_json(const json& j, const std::string& where
 }
 
 json thresholds_to_json(const Thresholds& t) {
-  return {{"gradient_mode", t.mode == GradientMode::Normal ? "normal" : "axes"},
-          {"reference_pi", t.reference_pi},
-          {"classes", {{"boundary", class_to_json(t.boundary)}, {"marking", class_to_json(t.marking)}}}};
+  json j{{"gradient_mode", t.mode == GradientMode::Normal ? "normal" : "axes"},
+         {"reference_pi", t.reference_pi},
+         {"classes", {{"boundary", class_to_json(t.boundary)}, {"marking", class_to_json(t.marking)}}}};
+  // Only when on: files without it read as before.
+  if (t.light.enabled) j["light"] = {{"adapt", true}, {"reference_field", t.light.reference_field}};
+  return j;
 }
 
 Thresholds thresholds_from_json(const json& j, const std::string& where) {
@@ -134,6 +137,14 @@ Thresholds thresholds_from_json(const json& j, const std::string& where) {
   const json& classes = field(j, "classes", where);
   t.boundary = class_from_json(field(classes, "boundary", where + ".classes"), where + ".classes.boundary");
   t.marking = class_from_json(field(classes, "marking", where + ".classes"), where + ".classes.marking");
+  if (j.contains("light")) {
+    const json& light = j["light"];
+    if (!light.is_object()) throw Error(where + ".light: expected an object");
+    t.light.enabled = boolean(light, "adapt", where + ".light");
+    t.light.reference_field = rgb(light, "reference_field", where + ".light");
+    if (t.light.enabled && !(t.light.reference_field[1] > 0))
+      throw Error(where + ".light.reference_field: the field's green must be above 0");
+  }
   return t;
 }
 

@@ -20,9 +20,9 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = 180.0 / kPi;
 
-constexpr const char* kNoMarkings =
-    "no field markings seen: no edges of white paint on green apart from grey edges. Use frames that "
-    "show the field's lines, or label a few segments of each class in the studio";
+constexpr const char* kNoMarkings = "no field markings seen: no edges of white paint on green apart from grey edges";
+constexpr const char* kMarkingsToDo =
+    ". Use frames that show the field's lines, or label a few segments of each class in the studio";
 constexpr const char* kNoBoundary = "no dark field edge seen (a field without a black wall at its edge)";
 
 double norm3(const Rgb& g) { return std::sqrt(double(g[0]) * g[0] + double(g[1]) * g[1] + double(g[2]) * g[2]); }
@@ -94,7 +94,8 @@ BoxExpectation expect_box(std::span<const detail::MixtureRow> rows, std::span<co
 std::string count_text(double mass) { return std::to_string(static_cast<long>(std::lround(mass))); }
 
 ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass& cls, double contrast_floor,
-                           const CalibrationParams& params, const char* no_mode, bool use_contrast) {
+                           const CalibrationParams& params, const char* no_mode, const char* what_to_do,
+                           bool use_contrast) {
   ClassCalibration out;
   out.achromatic_deg = achromatic_angle_deg(cls);
   const double theta_a = out.achromatic_deg;
@@ -125,9 +126,10 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   std::optional<detail::ClassMixture> m = detail::fit_class_mixture(x, theta_a, x_max, false, fit);
   if (!m || m->class_mass < params.min_class_mass) {
     out.class_mass = m ? m->class_mass : 0;
-    out.refused = m ? std::string(no_mode) + " (" + count_text(m->class_mass) + " edges of its colours, at least " +
-                          count_text(params.min_class_mass) + " needed)"
-                    : std::string(no_mode);
+    out.refused = std::string(no_mode);
+    if (m) out.refused += " (" + count_text(m->class_mass) + " edges of its colours, at least " +
+                          count_text(params.min_class_mass) + " needed)";
+    out.refused += what_to_do;
     return out;
   }
   const double angle_cap = theta_a - params.spike_margin_deg;
@@ -139,12 +141,12 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
       colour_cut && *colour_cut - m->class_angle.mean >= params.min_separation * m->class_angle.sd;
   if (!colour_separates && !use_contrast) {
     out.class_mass = m->class_mass;
-    out.refused = std::string(no_mode) + ": its edges cannot be told from grey edges";
+    out.refused = std::string(no_mode) + ": its edges cannot be told from grey edges" + what_to_do;
     return out;
   }
   if (!colour_separates) m = detail::fit_class_mixture(x, theta_a, x_max, true, fit);
   if (!m) {
-    out.refused = std::string(no_mode);
+    out.refused = std::string(no_mode) + what_to_do;
     return out;
   }
   out.used_contrast = !colour_separates;
@@ -179,7 +181,8 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   const BoxExpectation expected = expect_box(x, responsibility, a_cut, m_cut);
   out.separation = (a_cut - m->class_angle.mean) / m->class_angle.sd;
   if (!(expected.recall > 0)) {
-    out.refused = std::string(no_mode) + ": its edges cannot be told from grey edges, by colour or by contrast";
+    out.refused = std::string(no_mode) + ": its edges cannot be told from grey edges, by colour or by contrast" +
+                  what_to_do;
     return out;
   }
   out.expected_precision = expected.precision;
@@ -232,8 +235,8 @@ Calibration calibrate(std::span<const Segment> segments, const Thresholds& start
     marking.push_back({f.marking[m].angle_deg, f.marking[m].projection, f.length});
   }
   out.contrast_floor = percentile(normal_norms, params.floor_percentile);
-  out.marking = fit_class(marking, start.marking, out.contrast_floor, params, kNoMarkings, true);
-  out.boundary = fit_class(boundary, start.boundary, out.contrast_floor, params, kNoBoundary, false);
+  out.marking = fit_class(marking, start.marking, out.contrast_floor, params, kNoMarkings, kMarkingsToDo, true);
+  out.boundary = fit_class(boundary, start.boundary, out.contrast_floor, params, kNoBoundary, "", false);
   return out;
 }
 

@@ -27,7 +27,7 @@ Normal robust_normal(std::vector<double> values, double min_sd) {
   return n;
 }
 
-constexpr double kMinAngleSd = 0.25, kMinMagnitudeSd = 0.05, kMinScale = 0.1;
+constexpr double kMinAngleSd = 1.0, kMinMagnitudeSd = 0.05, kMinScale = 0.1;
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include "fieldlines/detect/light.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
@@ -44,6 +45,9 @@ struct Thresholds {
   GradientMode mode = GradientMode::Axes;
   // The reference converts degrees with pi = 3.1415; set to reproduce it bit for bit.
   bool reference_pi = false;
+  // Off by default; calibration from images turns it on (light.hpp). The detector then scales
+  // each frame's segment gradients onto the calibration's light before classifying.
+  LightAdaptation light;
   bool operator==(const Thresholds&) const = default;
 };
 

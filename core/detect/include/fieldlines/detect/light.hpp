@@ -1,0 +1,48 @@
+#pragma once
+// Per-frame light adaptation: the classes' projection thresholds assume the exposure the
+// thresholds were calibrated under; a frame in shade, in sun or with the camera's exposure
+// changed scales every edge's contrast. The carpet is the one large surface every frame shows,
+// so its brightness measures that scale: a frame's gradients are multiplied by
+// brightness(reference field) / brightness(frame's field) before classification.
+//
+// One gain for all three channels, not one per channel (a diagonal light model): measured on
+// the hand-drawn truth of real frames (docs/calibration.md), per-channel gains lowered marking
+// precision at two of three MSL venues and made Humanoid frames refuse. Cameras' white balance
+// already takes out the light's colour; dividing by the carpet's channels then tints the
+// grey axis that the classes' angle tests are built on.
+//
+// The field colour is the per-channel median of a frame's green pixels (green above red and
+// blue by `dominance`), sampled on a grid; fixed-size histograms, so no allocation.
+#include <optional>
+#include <span>
+
+#include <opencv2/core/mat.hpp>
+
+#include "fieldlines/detect/segment.hpp"
+
+namespace fieldlines {
+
+struct LightAdaptation {
+  bool enabled = false;
+  Rgb reference_field{};  // the field's colour under the calibration's light (R, G, B)
+  bool operator==(const LightAdaptation&) const = default;
+};
+
+struct FieldColourParams {
+  int step = 4;              // sample every step-th pixel of every step-th row
+  float dominance = 1.05f;   // green must exceed red and blue by this factor
+  int min_green = 20;        // darker pixels say nothing about the light
+  double min_share = 0.02;   // fewer green samples than this share: no field seen
+};
+
+// Empty when the frame shows too little green (8-bit BGR input).
+std::optional<Rgb> estimate_field_colour(const cv::Mat& bgr8, const FieldColourParams& params = {});
+
+// The gain that maps the frame's field brightness (R + G + B) onto the reference's, clamped to
+// [1/4, 4] so that one odd frame cannot blow up.
+float light_gain(const Rgb& reference, const Rgb& frame);
+
+// Scales every segment's gradients by the gain.
+void apply_light_gain(std::span<Segment> segments, float gain);
+
+}  // namespace fieldlines

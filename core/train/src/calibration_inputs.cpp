@@ -1,0 +1,40 @@
+#include "fieldlines/train/calibration_inputs.hpp"
+
+#include "fieldlines/detect/light.hpp"
+#include "fieldlines/train/percentile.hpp"
+
+namespace fieldlines {
+
+void CalibrationInputs::add_image(LineDetector& detector, const cv::Mat& image) {
+  Thresholds raw = detector.thresholds();
+  if (raw.light.enabled) {
+    raw.light = {};
+    detector.set_thresholds(raw);
+  }
+  detector.detect(image, found_);
+  ++frames_;
+  if (const std::optional<Rgb> field = estimate_field_colour(image))
+    fields_.push_back({segments_.size(), segments_.size() + found_.size(), *field});
+  segments_.insert(segments_.end(), found_.begin(), found_.end());
+}
+
+void CalibrationInputs::add_segments(std::span<const Segment> segments) {
+  segments_.insert(segments_.end(), segments.begin(), segments.end());
+}
+
+Thresholds CalibrationInputs::adapt_light(Thresholds start) {
+  start.light = {};
+  if (fields_.empty()) return start;
+  Rgb reference{};
+  for (int c = 0; c < 3; ++c) {
+    std::vector<double> channel;
+    for (const Field& f : fields_) channel.push_back(f.colour[c]);
+    reference[c] = static_cast<float>(median(channel));
+  }
+  for (const Field& f : fields_)
+    apply_light_gain(std::span(segments_).subspan(f.begin, f.end - f.begin), light_gain(reference, f.colour));
+  start.light = {true, reference};
+  return start;
+}
+
+}  // namespace fieldlines
