@@ -1,4 +1,4 @@
-// `fieldlines bench` end to end: the JSON schema, all six rows in both orders, the worse-order
+// `fieldlines bench` end to end: the JSON schema, all seven rows in both orders, the worse-order
 // ratios the targets are checked on, bad inputs. Speed itself is not asserted here (that is what
 // the benchmark is for); only that the numbers are sane and consistent with each other.
 #include <gtest/gtest.h>
@@ -51,7 +51,7 @@ void expect_ratio_summary(const json& r) {
   EXPECT_GE(hi, worse) << r;
 }
 
-TEST_F(CliBench, JsonListsAllSixRowsInBothOrders) {
+TEST_F(CliBench, JsonListsAllSevenRowsInBothOrders) {
   const fs::path a = write_image("a.png", synthetic_field(640, 480));
   const fs::path b = write_image("b.png", synthetic_field(640, 480, 11));
   const fs::path out = dir_ / "bench.json";
@@ -87,7 +87,10 @@ TEST_F(CliBench, JsonListsAllSixRowsInBothOrders) {
     if (d["name"] == "floor" || d["name"] == "gradients") EXPECT_EQ(segments, 0) << d;
     else EXPECT_GT(segments, 0) << d;
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"fieldlines", "edlines", "fld", "lsd", "gradients", "floor"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"fieldlines", "fieldlines+light", "edlines", "fld", "lsd", "gradients", "floor"}));
+  // The light adaptation finds the same segments (the field's colour is the reference's here).
+  EXPECT_EQ(rows["fieldlines+light"]["segments_per_image"], rows["fieldlines"]["segments_per_image"]);
   // Ours against ours is 1 in every order and round.
   for (const char* k : {"block", "interleaved", "worse", "min", "max"})
     EXPECT_DOUBLE_EQ(rows["fieldlines"]["ours_over_this"][k].get<double>(), 1.0) << k;

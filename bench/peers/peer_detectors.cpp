@@ -28,6 +28,16 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
                    return segments->size();
                  }});
 
+  // The robot's per-frame light adaptation on (light.hpp): what it adds to a detect.
+  Thresholds adapted = thresholds;
+  adapted.light = {true, {60, 130, 60}};
+  auto ours_light = std::make_shared<LineDetector>(params, adapted);
+  out.push_back({"fieldlines+light", "the same with per-frame light adaptation (field colour, one gain)",
+                 [ours_light, segments](const cv::Mat& bgr) {
+                   ours_light->detect(bgr, *segments);
+                   return segments->size();
+                 }});
+
   auto ed = cv::ximgproc::createEdgeDrawing();
   auto ed_state = std::make_shared<GreyLines>();
   out.push_back({"edlines", "OpenCV ximgproc EdgeDrawing, EDLines (detectEdges + detectLines)",

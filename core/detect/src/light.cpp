@@ -25,10 +25,10 @@ std::optional<Rgb> estimate_field_colour(const cv::Mat& bgr8, const FieldColourP
   if (bgr8.empty() || bgr8.type() != CV_8UC3) return std::nullopt;
   std::array<Histogram, 3> h{};  // R, G, B
   std::uint32_t green = 0, samples = 0;
-  const int step = std::max(params.step, 1);
-  for (int y = step / 2; y < bgr8.rows; y += step) {
+  const int row_step = std::max(params.row_step, 1), col_step = std::max(params.col_step, 1);
+  for (int y = row_step / 2; y < bgr8.rows; y += row_step) {
     const std::uint8_t* row = bgr8.ptr<std::uint8_t>(y);
-    for (int x = step / 2; x < bgr8.cols; x += step) {
+    for (int x = col_step / 2; x < bgr8.cols; x += col_step) {
       const std::uint8_t b = row[3 * x], g = row[3 * x + 1], r = row[3 * x + 2];
       ++samples;
       if (g < params.min_green || g < params.dominance * r || g < params.dominance * b) continue;

@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# Label-free calibration on real fields of other leagues, scored on frames it was not fitted on.
+# Per venue: calibrate on the venue's frames that have no hand-drawn truth, then score the
+# frames that have one (tests/data/hand_truth/<venue>, docs/calibration.md) with
+#   the built-in thresholds, the calibration without and with per-frame light adaptation,
+# and the recall ceiling (every segment called a marking: the share of line edges on any
+# segment) of the detector parameters used. Prints Markdown.
+#   usage: bash scripts/venue_calibration.sh [OUT_DIR]   (default build/venue-calibration)
+#   env:   FIELDLINES_BIN (default build/release/app/cli/fieldlines), SHARED (default ../shared)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin="${FIELDLINES_BIN:-build/release/app/cli/fieldlines}"
+out="${1:-build/venue-calibration}"
+data="${SHARED:-../shared}/data"
+rm -rf "$out"
+mkdir -p "$out"
+# venue|frames (glob under data)|title
+venues=("msl-delocht|msl-samples/20190606_r4_*|MSL, De Locht 2019"
+        "msl-bangkok|msl-samples/20220715_r7_*|MSL, Bangkok 2022"
+        "msl-bordeaux|msl-samples/20230709_r5_*|MSL, Bordeaux 2023"
+        "humanoid|humanoid-samples/*|Humanoid (mixed fields)"
+        "ssl|elsed-ssl/images/*.png|SSL (the authors' lab field)")
+# Every segment a marking, the boundary off: what the detector offers the classifier.
+python3 - assets/default_thresholds.json "$out/everything.json" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1]))
+t["classes"]["marking"].update(max_angle_deg=90, min_projection=0, min_length=0)
+t["classes"]["boundary"].update(max_angle_deg=0, min_projection=1000, min_length=100000)
+json.dump(t, open(sys.argv[2], "w"))
+PY
+score() {  # VENUE THRESHOLDS -> "P | R"
+  "$bin" eval --hand "tests/data/hand_truth/$1" --data "$data" --thresholds "$2" --json "$out/score.json" >/dev/null
+  python3 -c "import json; m=json.load(open('$out/score.json'))['total']['marking']; print('%.3f | %.3f' % (m['precision'], m['recall']))"
+}
+echo "| venue | frames fitted / scored | thresholds | marking P | marking R | calibration says |"
+echo "|---|---|---|---:|---:|---|"
+for v in "${venues[@]}"; do
+  IFS='|' read -r id pattern title <<<"$v"
+  [[ -d "tests/data/hand_truth/$id" ]] || continue
+  if ! compgen -G "$data/$pattern" >/dev/null; then echo "| $title | not measured: no $data | | | | |"; continue; fi
+  scored=$(python3 -c "import json,glob; print(' '.join(json.load(open(f))['image'] for f in glob.glob('tests/data/hand_truth/$id/*.json')))")
+  mkdir -p "$out/$id"
+  for image in $data/$pattern; do
+    [[ " $scored " == *" ${image#$data/} "* ]] || ln -s "$(realpath "$image")" "$out/$id/"
+  done
+  fitted=$(ls "$out/$id" | wc -l)
+  n_scored=$(wc -w <<<"$scored")
+  echo "| $title | $fitted / $n_scored | built-in | $(score "$id" assets/default_thresholds.json) | |"
+  for mode in no-light light; do
+    flag=(); [[ $mode == no-light ]] && flag=(--no-light-adaptation)
+    label="calibrated"; [[ $mode == light ]] && label="calibrated + light adaptation"
+    if "$bin" calibrate "$out/$id" -o "$out/$id-$mode.json" --json "$out/$id-$mode.fit.json" --quiet "${flag[@]}" \
+        2> "$out/$id-$mode.err"; then
+      says=$(python3 -c "
+import json; f=json.load(open('$out/$id-$mode.fit.json'))['fit']
+m=f['marking']; parts=[('by contrast' if m['used_contrast'] else 'by colour')]
+if m['warning']: parts.append(m['warning'])
+if not f['boundary']['fitted']: parts.append('boundary off')
+print('; '.join(parts))")
+      echo "| | | $label | $(score "$id" "$out/$id-$mode.json") | $says |"
+    else
+      echo "| | | $label | | | refused: $(sed 's/^fieldlines calibrate: error: //' "$out/$id-$mode.err" | tr '\n' ' ') |"
+    fi
+  done
+  echo "| | | (recall ceiling of the detector) | | $(score "$id" "$out/everything.json" | cut -d'|' -f2 | tr -d ' ') | |"
+done
+
+echo
+echo "Synthetic Kid field, one light at a time: calibrated on 20 frames of one light (seed 1), scored"
+echo "against the exact truth of 20 frames of each other light (seed 2); marking P / R."
+echo
+conditions=(artificial natural mixed dim shadows)
+for c in "${conditions[@]}"; do
+  for seed in 1 2; do
+    "$bin" synth --scene kid --condition "$c" --n 20 --seed "$seed" --quiet -o "$out/kid-$c-$seed" >/dev/null
+  done
+done
+echo "| calibrated on | light adaptation | $(printf '%s | ' "${conditions[@]}")"
+echo "|---|---|$(printf -- '---:|%.0s' "${conditions[@]}")"
+for cal in "${conditions[@]}"; do
+  for mode in no-light light; do
+    flag=(); [[ $mode == no-light ]] && flag=(--no-light-adaptation)
+    row="| $cal | $([[ $mode == light ]] && echo on || echo off) |"
+    "$bin" calibrate "$out/kid-$cal-1" -o "$out/kid-$cal-$mode.json" --quiet "${flag[@]}"
+    for c in "${conditions[@]}"; do
+      if [[ $c == "$cal" ]]; then row+=" (fitted) |"; continue; fi
+      "$bin" eval --gt "$out/kid-$c-2" --thresholds "$out/kid-$cal-$mode.json" --json "$out/score.json" >/dev/null
+      row+=" $(python3 -c "import json; m=json.load(open('$out/score.json'))['total']['marking']; print('%.3f / %.3f' % (m['precision'], m['recall']))") |"
+    done
+    echo "$row"
+  done
+done
