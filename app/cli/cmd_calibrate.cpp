@@ -167,9 +167,9 @@ int cmd_calibrate(const Args& args) {
   Inputs in = gather(a.positionals(), config, every, quiet);
   Thresholds start = config.thresholds;
   start.light = {};
-  if (!a.flag("--no-light-adaptation")) start = in.data.adapt_light(start);
+  start = in.data.image_settings(start, !a.flag("--no-light-adaptation"));
   const auto t1 = std::chrono::steady_clock::now();
-  const Calibration fit = calibrate(in.data.segments(), start);
+  const Calibration fit = calibrate(in.data.segments(), start, {}, in.data.boundary_candidates());
   const double fit_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
   const double gather_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   nlohmann::json p = calibration_provenance(fit);

@@ -182,7 +182,10 @@ int cmd_detect(const Args& args) {
 
   const int workers = std::max(1, std::min<int>(opt.threads, static_cast<int>(images.size())));
   std::vector<LineDetector> detectors;
-  for (int w = 0; w < workers; ++w) detectors.emplace_back(config.detector, config.thresholds);
+  for (int w = 0; w < workers; ++w) {
+    detectors.emplace_back(config.detector, config.thresholds);
+    detectors.back().set_find_field_boundary(opt.json || opt.draw);  // both show it
+  }
 
   std::vector<ItemResult> results(images.size());
   run_parallel_batch(images.size(), workers, [&](std::size_t i, int worker) {
@@ -194,11 +197,15 @@ int cmd_detect(const Args& args) {
       d.width = image.cols;
       d.height = image.rows;
       const auto t0 = std::chrono::steady_clock::now();
-      detectors[static_cast<std::size_t>(worker)].detect(image, d.segments);
+      LineDetector& detector = detectors[static_cast<std::size_t>(worker)];
+      detector.detect(image, d.segments);
       d.detect_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      d.field_boundary = detector.field_boundary().points;
       if (opt.draw) {
         std::vector<unsigned char> png;
-        if (!cv::imencode(".png", draw_overlay(image, d.segments), png))
+        cv::Mat overlay = draw_overlay(image, d.segments);
+        draw_field_boundary(overlay, detector.field_boundary().points);
+        if (!cv::imencode(".png", overlay, png))
           throw Error("could not encode the overlay as PNG");
         write_output_file(overlays[i], std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
       }

@@ -34,12 +34,16 @@ nlohmann::ordered_json to_json(const Segment& s) {
 nlohmann::ordered_json to_json(const ImageDetections& image) {
   nlohmann::ordered_json segments = nlohmann::ordered_json::array();
   for (const Segment& s : image.segments) segments.push_back(to_json(s));
+  nlohmann::ordered_json boundary = nlohmann::ordered_json::array();
+  for (const FieldBoundary::Point& p : image.field_boundary)
+    boundary.push_back(nlohmann::ordered_json::array({finite_or_zero(p.x), finite_or_zero(p.y)}));
   return {{"image", image.path.filename().string()},
           {"path", image.path.string()},
           {"width", image.width},
           {"height", image.height},
           {"detect_ms", image.detect_ms},
-          {"segments", std::move(segments)}};
+          {"segments", std::move(segments)},
+          {"field_boundary", std::move(boundary)}};
 }
 
 nlohmann::ordered_json detections_json(std::span<const ImageDetections> images, std::span<const FailedImage> failed) {

@@ -173,8 +173,8 @@ py::dict calibrate_images(const py::object& images, const py::object& thresholds
     py::gil_scoped_release nogil;
     LineDetector detector(start.detector, start.thresholds);
     for (const cv::Mat& view : views) inputs.add_image(detector, view);
-    adapted = inputs.adapt_light(start.thresholds);
-    fit = calibrate(inputs.segments(), adapted);
+    adapted = inputs.image_settings(start.thresholds, true);
+    fit = calibrate(inputs.segments(), adapted, {}, inputs.boundary_candidates());
   }
   try {
     calibrated = calibrated_thresholds(fit, adapted);

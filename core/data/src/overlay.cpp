@@ -85,6 +85,22 @@ cv::Scalar label_colour(Label label, const OverlayParams& params) {
   return params.unlabelled_colour;
 }
 
+void draw_field_boundary(cv::Mat& canvas, std::span<const FieldBoundary::Point> boundary, const OverlayParams& params) {
+  const int thickness =
+      params.thickness > 0 ? params.thickness : std::max(1, std::min(canvas.cols, canvas.rows) / 240);
+  constexpr double kDashPx = 10;
+  for (std::size_t i = 1; i < boundary.size(); ++i) {
+    const cv::Point2d a(boundary[i - 1].x, boundary[i - 1].y), b(boundary[i].x, boundary[i].y);
+    const double length = cv::norm(b - a);
+    for (double t = 0; t < length; t += 2 * kDashPx) {
+      const cv::Point2d p = a + (b - a) * (t / length), q = a + (b - a) * (std::min(t + kDashPx, length) / length);
+      if (params.outline_px > 0)
+        cv::line(canvas, p, q, params.outline_colour, thickness + 2 * params.outline_px, cv::LINE_AA);
+      cv::line(canvas, p, q, bgr(palette::kFieldBoundary), thickness, cv::LINE_AA);
+    }
+  }
+}
+
 cv::Mat draw_overlay(const cv::Mat& image, std::span<const Segment> segments, const OverlayParams& params) {
   cv::Mat canvas = to_bgr8(image).clone();
   const int thickness =

@@ -14,7 +14,10 @@ namespace fieldlines {
 struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   ElsedEngine engine;
   cv::Mat eight, bgr8;  // the input normalised to 8-bit BGR, reused between calls
+  FieldBoundary boundary;
 };
+
+
 
 LineDetector::LineDetector(DetectorParams params, Thresholds thresholds)
     : params_(std::move(params)), thresholds_(thresholds), impl_(std::make_unique<Impl>()) {
@@ -56,6 +59,8 @@ const cv::Mat* LineDetector::normalise(const cv::Mat& image) {
 
 void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   out.clear();
+  impl_->boundary.points.clear();
+  impl_->boundary.columns.clear();
   const cv::Mat* bgr = normalise(image);
   if (!bgr) return;
   impl_->engine.run(*bgr, params_, out);
@@ -63,7 +68,12 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
     if (const std::optional<Rgb> field = estimate_field_colour(*bgr))
       apply_light_gain(out, light_gain(thresholds_.light.reference_field, *field));
   classify_all(out, thresholds_);
+  if (find_boundary_ || thresholds_.field_boundary_gate) find_field_boundary(*bgr, impl_->boundary);
+  if (thresholds_.field_boundary_gate)
+    for (Segment& s : out) s.label = gate_by_field_boundary(s, impl_->boundary);
 }
+
+const FieldBoundary& LineDetector::field_boundary() const { return impl_->boundary; }
 
 LineDetector::GradientViews LineDetector::compute_gradients(const cv::Mat& image) {
   const cv::Mat* bgr = normalise(image);

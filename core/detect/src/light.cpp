@@ -31,7 +31,7 @@ std::optional<Rgb> estimate_field_colour(const cv::Mat& bgr8, const FieldColourP
     for (int x = col_step / 2; x < bgr8.cols; x += col_step) {
       const std::uint8_t b = row[3 * x], g = row[3 * x + 1], r = row[3 * x + 2];
       ++samples;
-      if (g < params.min_green || g < params.dominance * r || g < params.dominance * b) continue;
+      if (!params.green(b, g, r)) continue;
       ++h[0][r];
       ++h[1][g];
       ++h[2][b];

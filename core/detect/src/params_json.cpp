@@ -124,6 +124,7 @@ json thresholds_to_json(const Thresholds& t) {
          {"classes", {{"boundary", class_to_json(t.boundary)}, {"marking", class_to_json(t.marking)}}}};
   // Only when on: files without it read as before.
   if (t.light.enabled) j["light"] = {{"adapt", true}, {"reference_field", t.light.reference_field}};
+  if (t.field_boundary_gate) j["field_boundary"] = {{"gate", true}};
   return j;
 }
 
@@ -144,6 +145,11 @@ Thresholds thresholds_from_json(const json& j, const std::string& where) {
     t.light.reference_field = rgb(light, "reference_field", where + ".light");
     if (t.light.enabled && !(t.light.reference_field[1] > 0))
       throw Error(where + ".light.reference_field: the field's green must be above 0");
+  }
+  if (j.contains("field_boundary")) {
+    const json& fb = j["field_boundary"];
+    if (!fb.is_object()) throw Error(where + ".field_boundary: expected an object");
+    t.field_boundary_gate = boolean(fb, "gate", where + ".field_boundary");
   }
   return t;
 }

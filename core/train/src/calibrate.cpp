@@ -94,8 +94,8 @@ BoxExpectation expect_box(std::span<const detail::MixtureRow> rows, std::span<co
 std::string count_text(double mass) { return std::to_string(static_cast<long>(std::lround(mass))); }
 
 ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass& cls, double contrast_floor,
-                           const CalibrationParams& params, const char* no_mode, const char* what_to_do,
-                           bool use_contrast) {
+                           const CalibrationParams& params, double min_mass, const char* no_mode,
+                           const char* what_to_do, bool use_contrast) {
   ClassCalibration out;
   out.achromatic_deg = achromatic_angle_deg(cls);
   const double theta_a = out.achromatic_deg;
@@ -124,11 +124,11 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   // floor of the best expected F-0.5.
   const detail::MixtureFitParams fit{params.seed_margin_deg, params.max_iterations, params.tolerance};
   std::optional<detail::ClassMixture> m = detail::fit_class_mixture(x, theta_a, x_max, false, fit);
-  if (!m || m->class_mass < params.min_class_mass) {
+  if (!m || m->class_mass < min_mass) {
     out.class_mass = m ? m->class_mass : 0;
     out.refused = std::string(no_mode);
     if (m) out.refused += " (" + count_text(m->class_mass) + " edges of its colours, at least " +
-                          count_text(params.min_class_mass) + " needed)";
+                          count_text(min_mass) + " needed)";
     out.refused += what_to_do;
     return out;
   }
@@ -207,7 +207,11 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
 
 }  // namespace
 
-Calibration calibrate(std::span<const Segment> segments, const Thresholds& start, const CalibrationParams& params) {
+Calibration calibrate(std::span<const Segment> segments, const Thresholds& start, const CalibrationParams& params,
+                      std::span<const std::uint8_t> boundary_candidates) {
+  if (!boundary_candidates.empty() && boundary_candidates.size() != segments.size())
+    throw Error("calibrate: " + std::to_string(boundary_candidates.size()) + " boundary flags for " +
+                std::to_string(segments.size()) + " segments");
   Calibration out;
   out.segments = segments.size();
   if (segments.size() < params.min_segments) {
@@ -225,18 +229,20 @@ Calibration calibrate(std::span<const Segment> segments, const Thresholds& start
   normal_norms.reserve(segments.size());
   marking.reserve(segments.size());
   boundary.reserve(segments.size());
-  for (const Segment& s : segments) {
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const Segment& s = segments[i];
     normal_norms.push_back(normal_gradient_norm(s));
     const SegmentFeatures f = compute_features(s, start);
-    boundary.push_back({f.boundary.angle_deg, f.boundary.projection, f.length});
+    if (boundary_candidates.empty() || boundary_candidates[i])
+      boundary.push_back({f.boundary.angle_deg, f.boundary.projection, f.length});
     // For a straight edge grad_x and grad_y are one colour vector scaled by the normal's
     // components: the dominant one measures the same angle with less noise.
     const int m = f.marking_count == 2 && norm3(s.grad_x) > norm3(s.grad_y) ? 1 : 0;
     marking.push_back({f.marking[m].angle_deg, f.marking[m].projection, f.length});
   }
   out.contrast_floor = percentile(normal_norms, params.floor_percentile);
-  out.marking = fit_class(marking, start.marking, out.contrast_floor, params, kNoMarkings, kMarkingsToDo, true);
-  out.boundary = fit_class(boundary, start.boundary, out.contrast_floor, params, kNoBoundary, "", false);
+  out.marking = fit_class(marking, start.marking, out.contrast_floor, params, params.min_class_mass, kNoMarkings, kMarkingsToDo, true);
+  out.boundary = fit_class(boundary, start.boundary, out.contrast_floor, params, params.min_boundary_mass, kNoBoundary, "", false);
   return out;
 }
 

@@ -13,18 +13,27 @@ void CalibrationInputs::add_image(LineDetector& detector, const cv::Mat& image) 
   }
   detector.detect(image, found_);
   ++frames_;
-  if (const std::optional<Rgb> field = estimate_field_colour(image))
+  const std::optional<Rgb> field = estimate_field_colour(image);
+  if (field) {
+    find_field_boundary(image, boundary_);
+    std::erase_if(found_, [&](const Segment& s) { return place_of(s, boundary_) == BoundaryPlace::Above; });
     fields_.push_back({segments_.size(), segments_.size() + found_.size(), *field});
+    for (const Segment& s : found_) boundary_candidate_.push_back(place_of(s, boundary_) == BoundaryPlace::Along);
+  }
+  else
+    boundary_candidate_.insert(boundary_candidate_.end(), found_.size(), 1);
   segments_.insert(segments_.end(), found_.begin(), found_.end());
 }
 
 void CalibrationInputs::add_segments(std::span<const Segment> segments) {
   segments_.insert(segments_.end(), segments.begin(), segments.end());
+  boundary_candidate_.insert(boundary_candidate_.end(), segments.size(), 1);
 }
 
-Thresholds CalibrationInputs::adapt_light(Thresholds start) {
+Thresholds CalibrationInputs::image_settings(Thresholds start, bool light) {
   start.light = {};
-  if (fields_.empty()) return start;
+  start.field_boundary_gate = !fields_.empty();
+  if (fields_.empty() || !light) return start;
   Rgb reference{};
   for (int c = 0; c < 3; ++c) {
     std::vector<double> channel;

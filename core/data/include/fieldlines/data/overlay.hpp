@@ -5,6 +5,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "fieldlines/data/palette.hpp"
+#include "fieldlines/detect/field_boundary.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
@@ -32,6 +33,11 @@ struct OverlayParams {
 };
 
 cv::Scalar label_colour(Label label, const OverlayParams& params = {});
+
+// The frame's field boundary (fieldlines/detect/field_boundary.hpp) as a polyline, dashed so
+// that it never hides a segment under it, over the same dark outline.
+void draw_field_boundary(cv::Mat& canvas, std::span<const FieldBoundary::Point> boundary,
+                         const OverlayParams& params = {});
 
 // Returns an 8-bit BGR copy of `image` (any type load_image accepts) with the segments drawn.
 cv::Mat draw_overlay(const cv::Mat& image, std::span<const Segment> segments,

@@ -34,6 +34,7 @@ inline constexpr Rgb kOutline{10, 10, 10};      // under every segment
 // Paint the detector found no segment for (fieldlines/data/missed_paint.hpp), tinted in the
 // picture itself: a hue no label uses, far from turf (Delta-E ~69) and visible on white (~51).
 inline constexpr Rgb kMissedPaint{0, 255, 255};  // cyan
+inline constexpr Rgb kFieldBoundary{255, 255, 255};  // white over the outline: where the green ends
 inline constexpr float kOutlineExtra = 3;       // outline width = line width + this, pixels
 
 constexpr Rgb label_rgb(Label label) {

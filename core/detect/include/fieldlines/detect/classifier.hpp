@@ -48,6 +48,10 @@ struct Thresholds {
   // Off by default; calibration from images turns it on (light.hpp). The detector then scales
   // each frame's segment gradients onto the calibration's light before classifying.
   LightAdaptation light;
+  // Off by default: the frame's field boundary (field_boundary.hpp) gates both classes: a
+  // marking above it is none (paint is on the field; white walls and boards beside it are not),
+  // and so is a boundary edge away from it (a black robot standing on the field).
+  bool field_boundary_gate = false;
   bool operator==(const Thresholds&) const = default;
 };
 

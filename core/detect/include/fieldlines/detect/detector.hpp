@@ -13,6 +13,7 @@
 
 #include "fieldlines/detect/classifier.hpp"
 #include "fieldlines/detect/detector_params.hpp"
+#include "fieldlines/detect/field_boundary.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
@@ -44,11 +45,17 @@ class LineDetector {
   const Thresholds& thresholds() const { return thresholds_; }
   void set_thresholds(const Thresholds& t) { thresholds_ = t; }
 
+  // The field boundary of the last detect() (field_boundary.hpp): found when asked for here or
+  // when the thresholds keep markings below it; empty otherwise, or when the frame has no field.
+  void set_find_field_boundary(bool on) { find_boundary_ = on; }
+  const FieldBoundary& field_boundary() const;
+
  private:
   struct Impl;
   const cv::Mat* normalise(const cv::Mat& image);  // to 8-bit BGR; nullptr if smaller than 3x3
   DetectorParams params_;
   Thresholds thresholds_;
+  bool find_boundary_ = false;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -11,13 +11,14 @@
 // already takes out the light's colour; dividing by the carpet's channels then tints the
 // grey axis that the classes' angle tests are built on.
 //
-// The field colour is the per-channel median of a frame's green pixels (green above red and
-// blue by `dominance`), sampled on a grid; fixed-size histograms, so no allocation.
+// The field colour is the per-channel median of a frame's green pixels (field_green.hpp),
+// sampled on a grid; fixed-size histograms, so no allocation.
 #include <optional>
 #include <span>
 
 #include <opencv2/core/mat.hpp>
 
+#include "fieldlines/detect/field_green.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
@@ -32,8 +33,7 @@ struct FieldColourParams {
   // Every col_step-th pixel of every row_step-th row (4,800 samples at 640x480): few rows, each
   // read densely, since a row's cache lines cost the time, not the pixels in them.
   int row_step = 16, col_step = 4;
-  float dominance = 1.05f;   // green must exceed red and blue by this factor
-  int min_green = 20;        // darker pixels say nothing about the light
+  FieldGreen green;
   double min_share = 0.02;   // fewer green samples than this share: no field seen
 };
 

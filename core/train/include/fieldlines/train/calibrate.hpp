@@ -25,6 +25,7 @@
 //
 // Labels are never read. The result depends only on the set of segments, not on their order.
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 
 #include <nlohmann/json.hpp>
@@ -37,12 +38,13 @@
 namespace fieldlines {
 
 struct CalibrationParams {
-  std::size_t min_segments = 100;   // fewer: the statistics say nothing
+  std::size_t min_segments = 50;    // fewer: the statistics say nothing
   double window_deg = 10;           // fit angles in [0, theta_A + window]: the spike and its tails
   double seed_margin_deg = 3;       // the class's seed: angles below theta_A - margin
   double floor_percentile = 1;      // of the normal gradient norm: the detector's contrast floor
   double length_percentile = 2;     // of the class members' saliency: min_length
-  double min_class_mass = 8;        // segments the class must hold (EM mass): fewer is no mode
+  double min_class_mass = 8;        // segments the marking class must hold (EM mass): fewer is no mode
+  double min_boundary_mass = 30;    // the boundary's: a wall shows many edges, a false one costs more
   double few_edges = 30;            // below this mass the fit is kept with a warning
   double spike_margin_deg = 0.5;    // max_angle stays this far below theta_A
   double min_separation = 1;        // (max_angle - mean) / sd at the noise floor: colour separates
@@ -77,9 +79,11 @@ struct Calibration {
   std::size_t segments = 0;
 };
 
-// Fits both classes of `start` (its colours, sidedness and gradient mode are kept).
+// Fits both classes of `start` (its colours, sidedness and gradient mode are kept). With
+// `boundary_candidates` (one flag per segment, CalibrationInputs gives them) the boundary class
+// is fitted on the flagged segments alone: those along their frame's field boundary.
 Calibration calibrate(std::span<const Segment> segments, const Thresholds& start = {},
-                      const CalibrationParams& params = {});
+                      const CalibrationParams& params = {}, std::span<const std::uint8_t> boundary_candidates = {});
 
 // Thresholds that never pass: what a class the data do not show gets, so that a field without a
 // boundary wall does not mark furniture as one.

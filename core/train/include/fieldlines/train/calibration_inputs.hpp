@@ -4,6 +4,7 @@
 // onto one exposure the same way before the fit and the robot then does it per frame
 // (fieldlines/detect/light.hpp).
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -12,6 +13,7 @@
 
 #include "fieldlines/detect/classifier.hpp"
 #include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/field_boundary.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
@@ -24,12 +26,16 @@ class CalibrationInputs {
   // Segments without an image (a project or reference CSV): no field colour, never rescaled.
   void add_segments(std::span<const Segment> segments);
 
-  // Scales each imaged frame's segments onto the median field colour of those frames and
-  // returns `start` with light adaptation on at that reference; `start` with it off when no
-  // frame showed a field. Call once, after the last add.
-  Thresholds adapt_light(Thresholds start);
+  // What the images add to `start`, call once after the last add. Where frames showed a field:
+  // markings kept below the field boundary (field_boundary.hpp) and, with `light`, each imaged
+  // frame's segments scaled onto the median field colour of those frames with light
+  // adaptation on at that reference (light.hpp). Both off when no frame showed a field.
+  Thresholds image_settings(Thresholds start, bool light);
 
   const std::vector<Segment>& segments() const { return segments_; }
+  // Per segment: may it be a boundary edge (along its frame's field boundary, or from an input
+  // without an image)? calibrate() fits the boundary class on these alone.
+  const std::vector<std::uint8_t>& boundary_candidates() const { return boundary_candidate_; }
   std::size_t frames() const { return frames_; }                         // every add_image
   std::size_t frames_with_field() const { return fields_.size(); }
 
@@ -39,6 +45,8 @@ class CalibrationInputs {
     Rgb colour;
   };
   std::vector<Segment> segments_, found_;
+  std::vector<std::uint8_t> boundary_candidate_;
+  FieldBoundary boundary_;
   std::vector<Field> fields_;
   std::size_t frames_ = 0;
 };

@@ -1,0 +1,65 @@
+#pragma once
+// The field boundary of a frame: where the field's green ends, as a polyline left to right.
+//
+// The field's colour is the frame's own (light.hpp's estimate); a pixel is field when its
+// chromaticity is within a tolerance of the field's and its brightness within a range of it:
+// a loose "green dominates" test also passes grey walls under a greenish camera.
+// Each sampled column is scanned from the bottom up (the field is below the camera's horizon)
+// for the top of its field: field pixels interrupted by less than a gap (a ball, a robot's
+// foot) belong to it, and so does paint (a line near the camera can be wider than any gap);
+// the first longer stretch without field ends it. Column
+// tops are median-filtered across neighbouring columns (a lone column running up a green
+// poster or pole is an outlier), then replaced by their upper convex hull: a robot or player standing on
+// the field hides the green behind it and pulls its columns down, but the boundary of a flat
+// field seen from inside it is convex in the image, so the hull bridges such notches
+// (B-Human's field boundary does the same). A frame without green gives an empty boundary.
+// Buffers are the caller's and keep their capacity: no allocation once warm.
+#include <vector>
+
+#include <opencv2/core/mat.hpp>
+
+#include "fieldlines/detect/segment.hpp"
+
+
+namespace fieldlines {
+
+struct FieldBoundaryParams {
+  int column_step = 8;         // px between scanned columns
+  int row_step = 2;            // px between samples along a column
+  double gap_fraction = 0.06;  // a run without green this share of the height ends the field...
+  int min_gap_px = 8;          // ...and at least this long
+  double min_columns = 0.25;   // columns with field needed, as a share: fewer is no boundary
+  float chroma_tolerance = 0.07f;       // |r/s - r_f/s_f| + |g/s - g_f/s_f|, s = r + g + b
+  float min_brightness = 0.25f, max_brightness = 2.5f;  // s / s_f: shade to sun patch
+  int median_columns = 5;      // window of the filter over column tops (odd)
+  float paint_brightness = 1.4f;     // paint: s / s_f at least this...
+  float paint_chroma = 0.1f;         // ...and |r/s - 1/3| + |g/s - 1/3| at most this
+  double max_paint_fraction = 0.15;  // a run of paint longer than this share of the height is a wall
+};
+
+struct FieldBoundary {
+  struct Point {
+    float x = 0, y = 0;
+  };
+  std::vector<Point> points;     // the hull, left to right; empty: no field seen
+  std::vector<Point> columns;    // each scanned column's top of green (before the hull)
+  int image_height = 0;
+  bool empty() const { return points.empty(); }
+  // The boundary's row at column x (linear between hull points, held flat past the ends);
+  // -1 when empty (every row is below it).
+  float y_at(float x) const;
+};
+
+// Where a segment's midpoint lies: above the boundary by more than a line's own blur, along it
+// (within 3 % of the image height, at least 6 px), or below it. Below when the boundary is empty.
+enum class BoundaryPlace { Above, Along, Below };
+BoundaryPlace place_of(const Segment& segment, const FieldBoundary& boundary);
+
+// The segment's label under the gate: a marking above the boundary and a boundary edge not along
+// it become none (Thresholds::field_boundary_gate).
+Label gate_by_field_boundary(const Segment& segment, const FieldBoundary& boundary);
+
+// 8-bit BGR input; anything else gives an empty boundary.
+void find_field_boundary(const cv::Mat& bgr8, FieldBoundary& out, const FieldBoundaryParams& params = {});
+
+}  // namespace fieldlines

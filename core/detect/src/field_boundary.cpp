@@ -1,0 +1,115 @@
+#include "fieldlines/detect/field_boundary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "fieldlines/detect/light.hpp"
+
+namespace fieldlines {
+namespace {
+
+using Point = FieldBoundary::Point;
+
+// > 0 when a lies above the chord o-b on screen (y down): a point the upper hull keeps.
+double cross(const Point& o, const Point& a, const Point& b) {
+  return double(a.x - o.x) * (b.y - o.y) - double(a.y - o.y) * (b.x - o.x);
+}
+
+}  // namespace
+
+float FieldBoundary::y_at(float x) const {
+  if (points.empty()) return -1;
+  if (x <= points.front().x) return points.front().y;
+  if (x >= points.back().x) return points.back().y;
+  const auto it = std::lower_bound(points.begin(), points.end(), x, [](const Point& p, float v) { return p.x < v; });
+  const Point& b = *it;
+  const Point& a = *(it - 1);
+  return b.x > a.x ? a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x) : b.y;
+}
+
+BoundaryPlace place_of(const Segment& s, const FieldBoundary& boundary) {
+  constexpr float kBlurPx = 4, kAlongShare = 0.03f, kMinAlongPx = 6;
+  if (boundary.empty()) return BoundaryPlace::Below;
+  const float mx = 0.5f * (s.x0 + s.x1), my = 0.5f * (s.y0 + s.y1);
+  const float d = my - boundary.y_at(mx);
+  if (std::abs(d) <= std::max(kMinAlongPx, kAlongShare * float(boundary.image_height))) return BoundaryPlace::Along;
+  return d < -kBlurPx ? BoundaryPlace::Above : BoundaryPlace::Below;
+}
+
+Label gate_by_field_boundary(const Segment& s, const FieldBoundary& boundary) {
+  if (boundary.empty()) return s.label;
+  const BoundaryPlace place = place_of(s, boundary);
+  if (s.label == Label::Marking && place == BoundaryPlace::Above) return Label::None;
+  if (s.label == Label::Boundary && place != BoundaryPlace::Along) return Label::None;
+  return s.label;
+}
+
+void find_field_boundary(const cv::Mat& bgr8, FieldBoundary& out, const FieldBoundaryParams& params) {
+  out.points.clear();
+  out.columns.clear();
+  out.image_height = bgr8.rows;
+  if (bgr8.empty() || bgr8.type() != CV_8UC3) return;
+  const std::optional<Rgb> field = estimate_field_colour(bgr8);
+  if (!field) return;
+  const float field_sum = std::max((*field)[0] + (*field)[1] + (*field)[2], 1.f);
+  const float field_r = (*field)[0] / field_sum, field_g = (*field)[1] / field_sum;
+  const auto is_field = [&](const std::uint8_t* p) {
+    const float sum = float(p[0]) + p[1] + p[2];
+    if (sum < params.min_brightness * field_sum || sum > params.max_brightness * field_sum) return false;
+    return std::abs(p[2] / sum - field_r) + std::abs(p[1] / sum - field_g) <= params.chroma_tolerance;
+  };
+  // Paint: brighter than the carpet and nearly grey.
+  const auto is_paint = [&](const std::uint8_t* p) {
+    const float sum = float(p[0]) + p[1] + p[2];
+    return sum >= params.paint_brightness * field_sum &&
+           std::abs(p[2] / sum - 1.f / 3) + std::abs(p[1] / sum - 1.f / 3) <= params.paint_chroma;
+  };
+  const int paint_cap = static_cast<int>(std::lround(params.max_paint_fraction * bgr8.rows));
+  const int column_step = std::max(params.column_step, 1), row_step = std::max(params.row_step, 1);
+  const int gap = std::max(params.min_gap_px, static_cast<int>(std::lround(params.gap_fraction * bgr8.rows)));
+  int scanned = 0;
+  for (int x = column_step / 2; x < bgr8.cols; x += column_step) {
+    ++scanned;
+    int top = -1, since_green = 0, paint = 0;
+    for (int y = bgr8.rows - 1 - row_step / 2; y >= 0; y -= row_step) {
+      const std::uint8_t* p = bgr8.ptr<std::uint8_t>(y) + 3 * x;
+      if (is_field(p)) {
+        top = y;
+        since_green = paint = 0;
+      } else if (top >= 0 && is_paint(p) && (paint += row_step) <= paint_cap) {
+        // A painted line, however wide near the camera, is part of the field: it neither
+        // ends the field nor raises its top.
+      } else if (top >= 0 && (since_green += row_step) > gap) {
+        break;  // the field ended above `top`; below the first field pixel (the robot's own
+                // body, a lens's dark corner) nothing ends it
+      }
+    }
+    if (top >= 0) out.columns.push_back({float(x), float(top)});
+  }
+  if (out.columns.size() < std::max<std::size_t>(2, static_cast<std::size_t>(params.min_columns * scanned))) return;
+  // Median of each column's top with its neighbours (a fixed window: no allocation). The
+  // filtered tops go into `points` first, then the hull is built in place over them.
+  const int half = std::clamp(params.median_columns, 1, 15) / 2;
+  const int n = static_cast<int>(out.columns.size());
+  for (int i = 0; i < n; ++i) {
+    std::array<float, 15> window{};
+    int k = 0;
+    for (int j = std::max(0, i - half); j <= std::min(n - 1, i + half); ++j) window[k++] = out.columns[j].y;
+    std::nth_element(window.begin(), window.begin() + k / 2, window.begin() + k);
+    out.points.push_back({out.columns[i].x, window[k / 2]});
+  }
+  // Upper hull (Andrew's monotone chain over x): drop a point that lies below the chord of its
+  // neighbours, so notches close and the outline stays convex from above.
+  std::size_t kept = 0;
+  for (int i = 0; i < n; ++i) {
+    const Point p = out.points[i];
+    while (kept >= 2 && cross(out.points[kept - 2], out.points[kept - 1], p) <= 0) --kept;
+    out.points[kept++] = p;
+  }
+  out.points.resize(kept);
+}
+
+}  // namespace fieldlines

@@ -1,0 +1,85 @@
+// The field boundary (fieldlines/detect/field_boundary.hpp): where the green ends, robust to a
+// robot standing on the field and a wide line near the camera; empty without a field; and the
+// gate it puts on both classes.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "cli_test_support.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/field_boundary.hpp"
+
+namespace fl = fieldlines;
+
+namespace {
+
+// Carpet below a tilted horizon (y 100 at the left, 140 at the right), grey hall above.
+cv::Mat field_frame() {
+  cv::Mat img(480, 640, CV_8UC3, cv::Scalar(120, 120, 120));
+  const std::vector<cv::Point> carpet{{0, 100}, {639, 140}, {639, 479}, {0, 479}};
+  cv::fillConvexPoly(img, carpet, cv::Scalar(50, 140, 40));
+  return img;
+}
+
+float horizon(float x) { return 100 + 40 * x / 639; }
+
+TEST(FieldBoundary, FollowsTheTopOfTheGreenPastRobotsAndWideLines) {
+  cv::Mat img = field_frame();
+  // A black robot standing on the field hides the green up to y 300 over 80 columns, and a
+  // 60 px wide white line crosses the left part near the camera.
+  cv::rectangle(img, {300, 90}, {380, 300}, cv::Scalar(15, 15, 15), cv::FILLED);
+  cv::line(img, {0, 300}, {200, 330}, cv::Scalar(250, 250, 250), 60);
+  fl::FieldBoundary b;
+  fl::find_field_boundary(img, b);
+  ASSERT_FALSE(b.empty());
+  for (float x = 0; x < 640; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
+  EXPECT_EQ(b.image_height, 480);
+}
+
+TEST(FieldBoundary, EmptyWithoutAField) {
+  fl::FieldBoundary b;
+  fl::find_field_boundary(cv::Mat(480, 640, CV_8UC3, cv::Scalar(120, 120, 120)), b);
+  EXPECT_TRUE(b.empty());
+  EXPECT_EQ(b.y_at(10), -1);
+  fl::find_field_boundary(cv::Mat(), b);
+  EXPECT_TRUE(b.empty());
+  fl::find_field_boundary(cv::Mat(480, 640, CV_8UC1, cv::Scalar(100)), b);
+  EXPECT_TRUE(b.empty());
+}
+
+TEST(FieldBoundary, GateDropsMarkingsAboveAndBoundaryEdgesAwayFromIt) {
+  fl::FieldBoundary b;
+  fl::find_field_boundary(field_frame(), b);
+  ASSERT_FALSE(b.empty());
+  const auto at = [](float y, fl::Label label) {
+    fl::Segment s;
+    s.x0 = 0, s.x1 = 40, s.y0 = s.y1 = y;
+    s.label = label;
+    return s;
+  };
+  EXPECT_EQ(fl::gate_by_field_boundary(at(50, fl::Label::Marking), b), fl::Label::None);
+  EXPECT_EQ(fl::gate_by_field_boundary(at(300, fl::Label::Marking), b), fl::Label::Marking);
+  EXPECT_EQ(fl::gate_by_field_boundary(at(102, fl::Label::Boundary), b), fl::Label::Boundary);
+  EXPECT_EQ(fl::gate_by_field_boundary(at(300, fl::Label::Boundary), b), fl::Label::None);
+  EXPECT_EQ(fl::gate_by_field_boundary(at(50, fl::Label::None), b), fl::Label::None);
+  // An empty boundary gates nothing.
+  EXPECT_EQ(fl::gate_by_field_boundary(at(50, fl::Label::Marking), fl::FieldBoundary{}), fl::Label::Marking);
+}
+
+TEST(FieldBoundary, DetectorFindsItWhenAskedAndGatesWithTheThresholds) {
+  const cv::Mat img = fl::test::synthetic_field(640, 480);
+  fl::LineDetector plain;
+  plain.detect(img);
+  EXPECT_TRUE(plain.field_boundary().empty()) << "not asked for: not computed";
+  fl::Thresholds gated;
+  gated.field_boundary_gate = true;
+  fl::LineDetector detector({}, gated);
+  const std::vector<fl::Segment> found = detector.detect(img);
+  ASSERT_FALSE(detector.field_boundary().empty());
+  // The synthetic wall's foot is at y 80-89; every marking lies below it.
+  EXPECT_NEAR(detector.field_boundary().y_at(320), 85, 8);
+  for (const fl::Segment& s : found)
+    if (s.label == fl::Label::Marking) EXPECT_GT(0.5f * (s.y0 + s.y1), detector.field_boundary().y_at(0.5f * (s.x0 + s.x1)));
+}
+
+}  // namespace
