@@ -106,6 +106,10 @@ if [[ -d "$shared/data/elsed-ssl/annotations" ]]; then
   # Its synthetic rows come without the table header; eval prints the header it belongs to.
   "$bin" eval --gt "$out/calibration-table/ssl-test" --markdown | head -2 > "$out/eval-header.md"
 fi
+if [[ -d "$shared/data/msl-samples" ]]; then
+  echo "benchmarks.sh: bash scripts/venue_calibration.sh $out/venue-calibration" >&2
+  FIELDLINES_BIN="$bin" SHARED="$shared" bash scripts/venue_calibration.sh "$out/venue-calibration" > "$out/venues.md"
+fi
 echo "benchmarks.sh: bash scripts/synth_table.sh $out/synth-table" >&2
 FIELDLINES_BIN="$bin" bash scripts/synth_table.sh "$out/synth-table" > "$out/synth.md"
 load_end="$(cut -d' ' -f1-3 /proc/loadavg)"
@@ -242,6 +246,15 @@ else:
                         "Each of the authors' files calibrated without its labels, scored against the human labels",
                         "on all rows (`bash scripts/calibration_table.sh`); synthetic sets, per lighting condition,",
                         "and the commands: [docs/benchmarks.md](docs/benchmarks.md)."]
+
+doc_lines += ["### Label-free calibration on real fields of other leagues, held out", ""]
+venues = read("venues.md")
+if venues is None:
+    doc_lines += [f"Not measured: `{shared}/data/msl-samples` was not found (the shared data).", ""]
+else:
+    doc_lines += ["Each venue calibrated on its frames without hand-drawn truth, scored on the frames with it",
+                  "(tests/data/hand_truth); then synthetic lights, calibrated on one and scored on the others:", "",
+                  "```sh", "bash scripts/venue_calibration.sh", "```", ""] + venues.rstrip("\n").split("\n") + [""]
 
 doc_lines += ["### Synthetic sets, per lighting condition", "",
               "Marking thresholds trained on 40 autolabelled images of seed 1 (F-beta 0.5, all conditions),",

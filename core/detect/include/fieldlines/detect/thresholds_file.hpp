@@ -7,6 +7,8 @@
 //     "classes": { "boundary": {"from": [R,G,B], "to": [R,G,B], "two_sided": false,
 //                               "min_projection": p, "max_angle_deg": a, "min_length": l},
 //                  "marking": { same } },
+//     "light": {"adapt": true, "reference_field": [R,G,B]}     optional (light.hpp)
+//     "field_boundary": {"gate": true}                         optional (field_boundary.hpp)
 //     "provenance": { free-form object; `fieldlines train` writes data files, counts,
 //                     objective, seed, date and "train"/"test" metrics per class } }
 #include <filesystem>
