@@ -4,7 +4,9 @@
 # frames that have one (tests/data/hand_truth/<venue>, docs/calibration.md) with
 #   the built-in thresholds, the calibration without and with per-frame light adaptation,
 # and the recall ceiling (every segment called a marking: the share of line edges on any
-# segment) of the detector parameters used. Prints Markdown.
+# segment) of the detector parameters used. Prints Markdown. Before/after overlays of the scored
+# frames go to OUT_DIR/overlays/<venue>/{built-in,calibrated}/ (not into docs/: they are the
+# shared data's images).
 #   usage: bash scripts/venue_calibration.sh [OUT_DIR]   (default build/venue-calibration)
 #   env:   FIELDLINES_BIN (default build/release/app/cli/fieldlines), SHARED (default ../shared)
 set -euo pipefail
@@ -62,6 +64,10 @@ print('; '.join(parts))")
       echo "| | | $label | | | refused: $(sed 's/^fieldlines calibrate: error: //' "$out/$id-$mode.err" | tr '\n' ' ') |"
     fi
   done
+  scored_paths=(); for image in $scored; do scored_paths+=("$data/$image"); done
+  "$bin" detect --quiet --draw "$out/overlays/$id/built-in" "${scored_paths[@]}"
+  [[ -f "$out/$id-light.json" ]] &&
+    "$bin" detect --quiet --thresholds "$out/$id-light.json" --draw "$out/overlays/$id/calibrated" "${scored_paths[@]}"
   echo "| | | (recall ceiling of the detector) | | $(score "$id" "$out/everything.json" | cut -d'|' -f2 | tr -d ' ') | |"
 done
 
