@@ -71,15 +71,21 @@ TEST(FieldBoundary, DetectorFindsItWhenAskedAndGatesWithTheThresholds) {
   fl::LineDetector plain;
   plain.detect(img);
   EXPECT_TRUE(plain.field_boundary().empty()) << "not asked for: not computed";
+  EXPECT_FALSE(plain.field_colour()) << "neither light nor boundary needed it";
   fl::Thresholds gated;
   gated.field_boundary_gate = true;
   fl::LineDetector detector({}, gated);
   const std::vector<fl::Segment> found = detector.detect(img);
   ASSERT_FALSE(detector.field_boundary().empty());
+  ASSERT_TRUE(detector.field_colour());
+  EXPECT_NEAR((*detector.field_colour())[1], 140, 4);  // the carpet's green, measured once
   // The synthetic wall's foot is at y 80-89; every marking lies below it.
   EXPECT_NEAR(detector.field_boundary().y_at(320), 85, 8);
-  for (const fl::Segment& s : found)
-    if (s.label == fl::Label::Marking) EXPECT_GT(0.5f * (s.y0 + s.y1), detector.field_boundary().y_at(0.5f * (s.x0 + s.x1)));
+  for (const fl::Segment& s : found) {
+    if (s.label == fl::Label::Marking) {
+      EXPECT_GT(0.5f * (s.y0 + s.y1), detector.field_boundary().y_at(0.5f * (s.x0 + s.x1)));
+    }
+  }
 }
 
 }  // namespace

@@ -165,9 +165,7 @@ int cmd_calibrate(const Args& args) {
 
   const auto t0 = std::chrono::steady_clock::now();
   Inputs in = gather(a.positionals(), config, every, quiet);
-  Thresholds start = config.thresholds;
-  start.light = {};
-  start = in.data.image_settings(start, !a.flag("--no-light-adaptation"));
+  const Thresholds start = in.data.image_settings(config.thresholds, !a.flag("--no-light-adaptation"));
   const auto t1 = std::chrono::steady_clock::now();
   const Calibration fit = calibrate(in.data.segments(), start, {}, in.data.boundary_candidates());
   const double fit_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();

@@ -14,10 +14,9 @@ namespace fieldlines {
 struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   ElsedEngine engine;
   cv::Mat eight, bgr8;  // the input normalised to 8-bit BGR, reused between calls
+  std::optional<Rgb> field;  // of the last frame, when measured
   FieldBoundary boundary;
 };
-
-
 
 LineDetector::LineDetector(DetectorParams params, Thresholds thresholds)
     : params_(std::move(params)), thresholds_(thresholds), impl_(std::make_unique<Impl>()) {
@@ -59,21 +58,23 @@ const cv::Mat* LineDetector::normalise(const cv::Mat& image) {
 
 void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   out.clear();
-  impl_->boundary.points.clear();
-  impl_->boundary.columns.clear();
+  impl_->field.reset();
+  impl_->boundary.clear();
   const cv::Mat* bgr = normalise(image);
   if (!bgr) return;
   impl_->engine.run(*bgr, params_, out);
-  if (thresholds_.light.enabled)
-    if (const std::optional<Rgb> field = estimate_field_colour(*bgr))
-      apply_light_gain(out, light_gain(thresholds_.light.reference_field, *field));
+  const bool boundary = find_boundary_ || thresholds_.field_boundary_gate;
+  if (thresholds_.light.enabled || boundary) impl_->field = estimate_field_colour(*bgr);
+  if (thresholds_.light.enabled && impl_->field)
+    apply_light_gain(out, light_gain(thresholds_.light.reference_field, *impl_->field));
   classify_all(out, thresholds_);
-  if (find_boundary_ || thresholds_.field_boundary_gate) find_field_boundary(*bgr, impl_->boundary);
+  if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, impl_->boundary);
   if (thresholds_.field_boundary_gate)
     for (Segment& s : out) s.label = gate_by_field_boundary(s, impl_->boundary);
 }
 
 const FieldBoundary& LineDetector::field_boundary() const { return impl_->boundary; }
+const std::optional<Rgb>& LineDetector::field_colour() const { return impl_->field; }
 
 LineDetector::GradientViews LineDetector::compute_gradients(const cv::Mat& image) {
   const cv::Mat* bgr = normalise(image);

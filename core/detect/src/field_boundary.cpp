@@ -48,14 +48,16 @@ Label gate_by_field_boundary(const Segment& s, const FieldBoundary& boundary) {
 }
 
 void find_field_boundary(const cv::Mat& bgr8, FieldBoundary& out, const FieldBoundaryParams& params) {
-  out.points.clear();
-  out.columns.clear();
+  out.clear();
+  if (const std::optional<Rgb> field = estimate_field_colour(bgr8)) find_field_boundary(bgr8, *field, out, params);
+}
+
+void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& out, const FieldBoundaryParams& params) {
+  out.clear();
   out.image_height = bgr8.rows;
   if (bgr8.empty() || bgr8.type() != CV_8UC3) return;
-  const std::optional<Rgb> field = estimate_field_colour(bgr8);
-  if (!field) return;
-  const float field_sum = std::max((*field)[0] + (*field)[1] + (*field)[2], 1.f);
-  const float field_r = (*field)[0] / field_sum, field_g = (*field)[1] / field_sum;
+  const float field_sum = std::max(field[0] + field[1] + field[2], 1.f);
+  const float field_r = field[0] / field_sum, field_g = field[1] / field_sum;
   const auto is_field = [&](const std::uint8_t* p) {
     const float sum = float(p[0]) + p[1] + p[2];
     if (sum < params.min_brightness * field_sum || sum > params.max_brightness * field_sum) return false;

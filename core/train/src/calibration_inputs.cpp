@@ -11,17 +11,17 @@ void CalibrationInputs::add_image(LineDetector& detector, const cv::Mat& image) 
     raw.light = {};
     detector.set_thresholds(raw);
   }
+  detector.set_find_field_boundary(true);
   detector.detect(image, found_);
   ++frames_;
-  const std::optional<Rgb> field = estimate_field_colour(image);
-  if (field) {
-    find_field_boundary(image, boundary_);
-    std::erase_if(found_, [&](const Segment& s) { return place_of(s, boundary_) == BoundaryPlace::Above; });
+  if (const std::optional<Rgb>& field = detector.field_colour()) {
+    const FieldBoundary& boundary = detector.field_boundary();
+    std::erase_if(found_, [&](const Segment& s) { return place_of(s, boundary) == BoundaryPlace::Above; });
     fields_.push_back({segments_.size(), segments_.size() + found_.size(), *field});
-    for (const Segment& s : found_) boundary_candidate_.push_back(place_of(s, boundary_) == BoundaryPlace::Along);
-  }
-  else
+    for (const Segment& s : found_) boundary_candidate_.push_back(place_of(s, boundary) == BoundaryPlace::Along);
+  } else {
     boundary_candidate_.insert(boundary_candidate_.end(), found_.size(), 1);
+  }
   segments_.insert(segments_.end(), found_.begin(), found_.end());
 }
 

@@ -7,6 +7,7 @@
 // for 8-bit BGR input (tests/detect_allocation_test.cpp counts every heap call).
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <opencv2/core/mat.hpp>
@@ -49,6 +50,9 @@ class LineDetector {
   // when the thresholds keep markings below it; empty otherwise, or when the frame has no field.
   void set_find_field_boundary(bool on) { find_boundary_ = on; }
   const FieldBoundary& field_boundary() const;
+  // The field colour of the last detect() (light.hpp), measured once when the light adaptation
+  // or the field boundary needed it; empty otherwise, or when the frame shows no field.
+  const std::optional<Rgb>& field_colour() const;
 
  private:
   struct Impl;

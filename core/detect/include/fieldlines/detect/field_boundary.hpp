@@ -45,6 +45,7 @@ struct FieldBoundary {
   std::vector<Point> columns;    // each scanned column's top of green (before the hull)
   int image_height = 0;
   bool empty() const { return points.empty(); }
+  void clear() { points.clear(), columns.clear(); }
   // The boundary's row at column x (linear between hull points, held flat past the ends);
   // -1 when empty (every row is below it).
   float y_at(float x) const;
@@ -59,7 +60,10 @@ BoundaryPlace place_of(const Segment& segment, const FieldBoundary& boundary);
 // it become none (Thresholds::field_boundary_gate).
 Label gate_by_field_boundary(const Segment& segment, const FieldBoundary& boundary);
 
-// 8-bit BGR input; anything else gives an empty boundary.
+// 8-bit BGR input; anything else gives an empty boundary. The first form measures the frame's
+// field colour itself (light.hpp); the second takes it from a caller that already has it.
 void find_field_boundary(const cv::Mat& bgr8, FieldBoundary& out, const FieldBoundaryParams& params = {});
+void find_field_boundary(const cv::Mat& bgr8, const Rgb& field_colour, FieldBoundary& out,
+                         const FieldBoundaryParams& params = {});
 
 }  // namespace fieldlines

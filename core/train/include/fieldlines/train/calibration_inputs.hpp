@@ -20,14 +20,16 @@ namespace fieldlines {
 
 class CalibrationInputs {
  public:
-  // Detects `image` with raw gradients (any light adaptation of the detector's thresholds off:
-  // the frames' light is what is measured) and keeps its segments and field colour.
+  // Detects `image` with raw gradients (turns the detector's light adaptation off, since the
+  // frames' light is what is measured, and its field boundary on) and keeps the frame's field
+  // colour and its segments, but for those above its field boundary: what is beside the field
+  // says nothing about paint.
   void add_image(LineDetector& detector, const cv::Mat& image);
   // Segments without an image (a project or reference CSV): no field colour, never rescaled.
   void add_segments(std::span<const Segment> segments);
 
   // What the images add to `start`, call once after the last add. Where frames showed a field:
-  // markings kept below the field boundary (field_boundary.hpp) and, with `light`, each imaged
+  // the field boundary gate on (field_boundary.hpp) and, with `light`, each imaged
   // frame's segments scaled onto the median field colour of those frames with light
   // adaptation on at that reference (light.hpp). Both off when no frame showed a field.
   Thresholds image_settings(Thresholds start, bool light);
@@ -46,7 +48,6 @@ class CalibrationInputs {
   };
   std::vector<Segment> segments_, found_;
   std::vector<std::uint8_t> boundary_candidate_;
-  FieldBoundary boundary_;
   std::vector<Field> fields_;
   std::size_t frames_ = 0;
 };
