@@ -94,6 +94,15 @@ TEST_F(Calibrate, ImageFoldersAreDetectedThenFittedWithAReport) {
   EXPECT_NE(r.out.find("marking"), std::string::npos) << r.out;
   const fl::ThresholdsFile file = fl::load_thresholds_file(out);
   EXPECT_EQ(file.provenance["counts"]["images"], 16);
+  // From pictures of a field: light adaptation and the field boundary gate on for the robot,
+  // and both off with --no-light-adaptation for the light alone.
+  EXPECT_TRUE(file.thresholds.light.enabled);
+  EXPECT_GT(file.thresholds.light.reference_field[1], file.thresholds.light.reference_field[0]);
+  EXPECT_TRUE(file.thresholds.field_boundary_gate);
+  const fs::path plain = dir_ / "plain.json";
+  ASSERT_EQ(run_cli({"calibrate", set.string(), "-o", plain.string(), "--no-light-adaptation", "--quiet"}, dir_).exit_code, 0);
+  EXPECT_FALSE(fl::load_thresholds_file(plain).thresholds.light.enabled);
+  EXPECT_TRUE(fl::load_thresholds_file(plain).thresholds.field_boundary_gate);
   const auto fit = nlohmann::json::parse(read_text(report));
   EXPECT_TRUE(fit["fit"]["marking"]["fitted"].get<bool>()) << fit.dump(2);
   EXPECT_GE(fit["fit_ms"].get<double>(), 0.0);
