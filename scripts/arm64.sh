@@ -4,7 +4,9 @@
 # fidelity and fieldlines::detect unit tests under qemu-user, and packages the robot's library
 # as an arm64 .deb.
 #
-#   bash scripts/arm64.sh          (test stage `arm64` of scripts/test.sh)
+#   bash scripts/arm64.sh            (test stage `arm64` of scripts/test.sh)
+#   bash scripts/arm64.sh --prepare  (steps 1 and 2 alone: scripts/test.sh runs them in the
+#                                     background while the other stages build and test)
 #
 # Steps (docs/robot.md, "arm64"):
 #   1. host tools: g++-aarch64-linux-gnu, qemu-user-static (apt-get when root, else the apt line);
@@ -17,7 +19,8 @@
 #      OpenCV development packages the release build needs;
 #   3. cmake --preset arm64 (cmake/aarch64-linux-gnu.cmake; no studio, benchmarks or Python)
 #      and a build of fieldlines_detect, the CLI and the tests below, at most -j2;
-#   4. the tests under qemu-aarch64 -L sysroot, each of which must pass (and run at least one
+#   4. the tests under qemu-aarch64 -L sysroot, FIELDLINES_ARM64_JOBS at a time (qemu-user runs
+#      one thread per program), each of which must pass (and run at least one
 #      test); the fidelity test must print 472/472 and 1843/1843, and the CLI must run. Besides
 #      the detector, classifier and fidelity tests: the fieldlines::detect tests that start no
 #      CLI child process (gradient_pass_test checks the NEON gradient kernels bit for bit
@@ -29,6 +32,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root="$PWD"
+prepare_only=0
+case "${1:-}" in
+  --prepare) prepare_only=1 ;;
+  "") ;;
+  *) echo "arm64.sh: unknown argument '$1' (--prepare or nothing)" >&2; exit 2 ;;
+esac
 start=$SECONDS
 jobs="${FIELDLINES_ARM64_JOBS:-2}"
 out="$root/build/arm64"
@@ -145,6 +154,8 @@ EOF
   say "sysroot ready: $(du -sh "$sysroot" | cut -f1) ($(elapsed))"
 fi
 
+((prepare_only == 0)) || exit 0
+
 # --- 3. configure and build ----------------------------------------------------------------
 cmake --preset arm64 >/dev/null
 cmake --build --preset arm64 -j"$jobs" --target fieldlines_detect fieldlines "${tests[@]}"
@@ -165,15 +176,21 @@ ran_enough() {
   ((!have_data)) && grep -qE '^\[  SKIPPED \] [1-9][0-9]* tests?' "$1"
 }
 failed=0
+for t in "${tests[@]}"; do   # started FIELDLINES_ARM64_JOBS at a time, read in order below
+  while (($(jobs -rp | wc -l) >= jobs)); do wait -n || true; done
+  rm -f "$out/$t.qemu.log" "$out/$t.qemu.ok"
+  say "running $t under $(basename "$qemu")"
+  run "$out/tests/$t" --gtest_brief=1 >"$out/$t.qemu.log" 2>&1 && touch "$out/$t.qemu.ok" &
+done
+wait
 for t in "${tests[@]}"; do
   log="$out/$t.qemu.log"
-  rm -f "$log"
-  say "running $t under $(basename "$qemu")"
-  if run "$out/tests/$t" --gtest_brief=1 >"$log" 2>&1 && ran_enough "$log"; then
+  if [[ -f "$out/$t.qemu.ok" ]] && ran_enough "$log"; then
     grep -E '^\[  PASSED  \]|SKIPPED' "$log" >&2 || true
   else
     cat "$log" >&2; say "$t FAILED"; failed=1
   fi
+  rm -f "$out/$t.qemu.ok"
 done
 # The issue's bar, stricter than the tests' own thresholds (they accept 90 % recall): every
 # reference segment matched with the same count, same labels, and every classifier vector agrees.
