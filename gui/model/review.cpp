@@ -36,11 +36,14 @@ std::size_t StudioController::refresh_proposals(const Thresholds& t) {
 std::string StudioController::propose() {
   const LabelledSet labelled = project_.labelled();
   const ProposalThresholds made =
-      proposal_thresholds(all_segments(), labelled.segments, project_.thresholds, proposal_params());
+      proposal_thresholds(all_segments(), labelled.segments, proposal_start(), proposal_params());
+  follow_proposals(made);
   const std::size_t proposed = refresh_proposals(made.thresholds);
   proposal_summary_ = std::to_string(proposed) + " proposals (marking " + std::string(to_string(made.marking)) +
                       ", boundary " + std::string(to_string(made.boundary)) + ")";
-  if (!made.note.empty()) proposal_summary_ += "; " + made.note;
+  // The guidance names calibration's reasons and adds what to do; otherwise the note says why.
+  if (!guidance_.empty()) proposal_summary_ += ". " + guidance_;
+  else if (!made.note.empty()) proposal_summary_ += "; " + made.note;
   autosave();
   return proposal_summary_;
 }

@@ -36,17 +36,21 @@ void draw_export_panel(studio::StudioController& controller, UiState& ui) {
   if (ImGui::BeginTable("thresholds", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) {
     for (const char* header : {"class", "min projection", "max angle (deg)", "min length"}) ImGui::TableSetupColumn(header);
     ImGui::TableHeadersRow();
-    for (const auto& [name, c] : {std::pair{"marking", t.marking.thresholds}, std::pair{"boundary", t.boundary.thresholds}}) {
+    for (const Label cls : studio::kSwitchableClasses) {
+      const ClassThresholds& c = studio::class_thresholds(t, cls);
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(name);
+      ImGui::TextUnformatted(cls == Label::Marking ? "marking" : "boundary");
       for (const float value : {c.min_projection, c.max_angle_deg, c.min_length}) {
         ImGui::TableNextColumn();
-        ImGui::Text("%.2f", value);
+        if (controller.class_on(cls)) ImGui::Text("%.2f", value);
+        else ImGui::TextDisabled("off");
       }
     }
     ImGui::EndTable();
   }
+  // Written into the file: an off class gets thresholds no segment passes.
+  for (const Label cls : studio::kSwitchableClasses) class_switch(controller, cls);
   ImGui::Separator();
   studio::ExportForm& form = ui.export_form;
   form.update(controller);

@@ -58,19 +58,25 @@ void counts_line(const char* name, const ClassCounts& c) {
 }  // namespace
 
 void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/) {
-  Thresholds t = controller.thresholds();
   if (controller.auto_train()) ImGui::TextDisabled("auto-train is on: moving a slider turns it off");
   bool released = false;
-  bool changed = class_sliders("marking (white <-> green)", t.marking.thresholds, released);
-  ImGui::Separator();
-  changed |= class_sliders("boundary (black -> green)", t.boundary.thresholds, released);
-  if (ImGui::Button("Reset to defaults")) {
-    t = Thresholds{};
-    changed = released = true;
-  }
-  if (changed) {
+  const auto hand_tuned = [&](const Thresholds& t) {
     controller.set_auto_train(false);  // otherwise the next label change overwrites the hand tuning
     controller.set_thresholds(t);
+  };
+  for (const Label cls : studio::kSwitchableClasses) {
+    if (cls == Label::Boundary) ImGui::Separator();
+    const bool on = class_switch(controller, cls);
+    Thresholds t = controller.thresholds();  // after the switch, which may change them
+    ImGui::BeginDisabled(!on);
+    if (class_sliders(cls == Label::Marking ? "marking (white <-> green)" : "boundary (black -> green)",
+                      studio::class_thresholds(t, cls), released))
+      hand_tuned(t);
+    ImGui::EndDisabled();
+  }
+  if (ImGui::Button("Reset to defaults")) {
+    hand_tuned(Thresholds{});
+    released = true;
   }
   if (released) controller.flush();
   ImGui::Separator();
