@@ -41,9 +41,8 @@ std::string StudioController::propose() {
   const std::size_t proposed = refresh_proposals(made.thresholds);
   proposal_summary_ = std::to_string(proposed) + " proposals (marking " + std::string(to_string(made.marking)) +
                       ", boundary " + std::string(to_string(made.boundary)) + ")";
-  // The guidance names calibration's reasons and adds what to do; otherwise the note says why.
-  if (!guidance_.empty()) proposal_summary_ += ". " + guidance_;
-  else if (!made.note.empty()) proposal_summary_ += "; " + made.note;
+  // With guidance (its own line in the status bar and the Train tab) the note would repeat it.
+  if (guidance_.empty() && !made.note.empty()) proposal_summary_ += "; " + made.note;
   autosave();
   return proposal_summary_;
 }

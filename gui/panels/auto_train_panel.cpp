@@ -60,7 +60,8 @@ void draw_auto_train(studio::StudioController& controller) {
   if (ImGui::Checkbox("auto-train", &on)) controller.set_auto_train(on);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("retrain both classes on the train split after every label change\n"
-                      "(label-free until a class has 10 labels); the thresholds follow your labels");
+                      "(label-free until a class has 10 labels, or 3 where calibration refuses it);\n"
+                      "the thresholds follow your labels");
   }
   ImGui::SameLine();
   if (ImGui::Button("Propose labels")) controller.propose();
@@ -72,6 +73,8 @@ void draw_auto_train(studio::StudioController& controller) {
     ImGui::TextWrapped("%s", controller.auto_train_summary().c_str());
   }
   if (!controller.proposal_summary().empty()) ImGui::TextWrapped("%s", controller.proposal_summary().c_str());
+  // Why proposals are few and what to do (also in the status bar), until the labels answer it.
+  if (!controller.guidance().empty()) wrapped_text({1, 0.7f, 0.3f, 1}, controller.guidance());
   const auto& curve = controller.learning_curve();
   if (curve.empty()) {
     wrapped_hint("learning curve (test F1 over labels): appears once you label with auto-train on");

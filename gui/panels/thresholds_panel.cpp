@@ -13,15 +13,25 @@
 namespace fieldlines::gui {
 
 namespace {
+// A slider's bar takes what its label leaves of the panel's width, so the label is never cut.
+void fit_next_slider(const char* label) {
+  const float avail = ImGui::GetContentRegionAvail().x;
+  const float text = ImGui::CalcTextSize(label, nullptr, true).x + ImGui::GetStyle().ItemInnerSpacing.x;
+  ImGui::SetNextItemWidth(std::max(avail - text, avail * 0.35f));
+}
+
 // While a slider is dragged the controller saves after a short pause; releasing it saves at once.
 bool class_sliders(const char* name, ClassThresholds& t, bool& released) {
   bool changed = false;
   ImGui::PushID(name);
   ImGui::TextUnformatted(name);
+  fit_next_slider("min projection");
   changed |= ImGui::SliderFloat("min projection", &t.min_projection, 0, 255, "%.1f");
   released |= ImGui::IsItemDeactivatedAfterEdit();
+  fit_next_slider("max angle (deg)");
   changed |= ImGui::SliderFloat("max angle (deg)", &t.max_angle_deg, 0, 90, "%.1f");
   released |= ImGui::IsItemDeactivatedAfterEdit();
+  fit_next_slider("min length");
   changed |= ImGui::SliderFloat("min length", &t.min_length, 0, 400, "%.0f");
   released |= ImGui::IsItemDeactivatedAfterEdit();
   ImGui::PopID();
@@ -35,6 +45,7 @@ bool detector_slider(const ParamSpec& spec, DetectorParams& p) {
   std::replace(label.begin(), label.end(), '_', ' ');
   if (!spec.unit.empty()) label += " (" + std::string(spec.unit) + ")";
   const auto lo = static_cast<float>(spec.slider.lo), hi = static_cast<float>(spec.slider.hi);
+  fit_next_slider(label.c_str());
   if (const auto* member = std::get_if<int DetectorParams::*>(&spec.member)) {
     ImGui::SliderInt(label.c_str(), &(p.*(*member)), static_cast<int>(lo), static_cast<int>(hi));
   } else if (const auto* real = std::get_if<double DetectorParams::*>(&spec.member)) {

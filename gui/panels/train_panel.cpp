@@ -100,7 +100,7 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
     // A marker, not the button's tooltip: that one covered the progress line under the button.
     ImGui::SameLine();
     help_marker(("trains on the train split, reports both splits\n" + controller.split_summary()).c_str());
-    if (controller.test_segment_count() == 0) ImGui::TextColored({1, 0.7f, 0.3f, 1}, "%s", controller.split_summary().c_str());
+    if (controller.test_segment_count() == 0) wrapped_text({1, 0.7f, 0.3f, 1}, controller.split_summary());
   } else if (ImGui::Button("Stop")) {
     ui.training.toggle(controller);
   }

@@ -11,6 +11,7 @@
 #include "fieldlines/train/calibrate.hpp"
 #include "fixtures.hpp"
 #include "gui/model/studio_controller.hpp"
+#include "gui/model/status_line.hpp"
 #include "gui/model/studio_files.hpp"
 #include "tests/known_features.hpp"
 
@@ -181,7 +182,11 @@ TEST(StudioClassSwitch, WhenCalibrationRefusesTheMarkingsTheGuidanceSaysWhyAndWh
   EXPECT_NE(g.find("Calibration cannot fit the markings"), std::string::npos) << g;
   EXPECT_NE(g.find("no field markings seen"), std::string::npos) << g;  // why, in calibration's words
   EXPECT_NE(g.find("Label a few segments of each class"), std::string::npos) << g;  // what to do
-  EXPECT_NE(summary.find(g), std::string::npos) << summary;  // the status line P leaves
+  // The status bar shows it (as a warning, ahead of P's own message) until labels answer it.
+  const std::vector<fs::StatusNote> notes = fs::status_notes(c, summary);
+  ASSERT_FALSE(notes.empty());
+  EXPECT_EQ(notes[0].text, g);
+  EXPECT_EQ(notes[0].severity, fs::Severity::Warning);
   EXPECT_TRUE(c.class_on(Label::Marking));  // never switched off: the markings are what the robot needs
 
   c.select_image(0);
@@ -191,6 +196,7 @@ TEST(StudioClassSwitch, WhenCalibrationRefusesTheMarkingsTheGuidanceSaysWhyAndWh
   EXPECT_NE(after.find("marking trained"), std::string::npos) << after;
   EXPECT_EQ(c.guidance().find("markings"), std::string::npos) << c.guidance();
   EXPECT_GT(f.proposed(Label::Marking), 0u);
+  for (const fs::StatusNote& n : fs::status_notes(c, after)) EXPECT_EQ(n.text.find("markings"), std::string::npos) << n.text;
 }
 
 }  // namespace
