@@ -102,6 +102,9 @@ class StudioController {
   const Counts& test_counts() const { return test_counts_; }
   // Images holding a labelled segment of the test split: how much the test figures mean.
   std::size_t test_image_count() const { return test_images_; }
+  // With fewer than kMinTestImages test images, the last retraining's leave-one-image-out
+  // figures of the review loop's rule (leave_one_out.hpp); images = 0 when there are none.
+  const LeaveOneOut& leave_one_out() const { return leave_one_out_; }
 
   // --- the test split: split_train_test (fieldlines/train/splits.hpp) of the LABELLED segments
   // with the project's SplitSpec, so the studio tests on what `fieldlines train` would with the
@@ -256,6 +259,7 @@ class StudioController {
   LiveRetraining live_{options_.auto_train};
   ClassSwitch switches_[2] = {{Thresholds{}.marking.thresholds, {}}, {Thresholds{}.boundary.thresholds, {}}};
   std::string guidance_;
+  LeaveOneOut leave_one_out_;
 };
 
 }  // namespace fieldlines::studio

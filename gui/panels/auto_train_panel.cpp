@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "gui/model/leave_one_out.hpp"
 #include "gui/model/overlay_style.hpp"
 #include "gui/model/shortcuts.hpp"
 #include "gui/panels/panels.hpp"
@@ -14,6 +15,7 @@ namespace fieldlines::gui {
 namespace {
 ImU32 colour(studio::Rgba c) { return IM_COL32(c.r, c.g, c.b, c.a); }
 
+// Points without figures (too few test images, no leave-one-out) break the line.
 void draw_curve(const std::vector<studio::CurvePoint>& curve) {
   const ImVec2 size{ImGui::GetContentRegionAvail().x, 120};
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
@@ -40,7 +42,7 @@ void draw_curve(const std::vector<studio::CurvePoint>& curve) {
     std::optional<ImVec2> prev;
     for (const studio::CurvePoint& p : curve) {
       const ClassCounts& c = counts_of(p);
-      if (p.test_segments == 0 || c.empty()) {
+      if (p.test_segments == 0 || !p.judged || c.empty()) {
         prev.reset();
         continue;
       }
@@ -86,8 +88,14 @@ void draw_auto_train(studio::StudioController& controller) {
     if (last.test_segments > 0 && !c.empty()) std::snprintf(s, sizeof s, "%.3f", c.f1());
     return std::string(s);
   };
-  ImGui::TextWrapped("test F1 after %zu labels: marking %s, boundary %s", last.labelled,
-                     f1(last.test.marking).c_str(), f1(last.test.boundary).c_str());
+  if (!last.judged) {
+    wrapped_hint("test F1 after " + std::to_string(last.labelled) + " labels: " +
+                 studio::not_enough_to_judge(controller.test_image_count()));
+  } else {
+    ImGui::TextWrapped("%s F1 after %zu labels: marking %s, boundary %s",
+                       last.leave_one_out ? "leave-one-image-out" : "test", last.labelled, f1(last.test.marking).c_str(),
+                       f1(last.test.boundary).c_str());
+  }
   draw_curve(curve);
 }
 

@@ -8,6 +8,7 @@
 
 #include "fieldlines/detect/detector_params.hpp"
 #include "gui/model/figures.hpp"
+#include "gui/model/leave_one_out.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
@@ -95,8 +96,13 @@ void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/
   counts_line("marking", controller.train_counts().marking);
   counts_line("boundary", controller.train_counts().boundary);
   ImGui::TextDisabled("test split:");
-  counts_line("marking", controller.test_counts().marking);
-  counts_line("boundary", controller.test_counts().boundary);
+  if (const std::string few = studio::not_enough_to_judge(controller.test_image_count());
+      controller.test_segment_count() && !few.empty()) {
+    wrapped_hint(few + " (Metrics tab: leave-one-image-out figures)");
+  } else {
+    counts_line("marking", controller.test_counts().marking);
+    counts_line("boundary", controller.test_counts().boundary);
+  }
   ImGui::TextWrapped("%s", controller.split_summary().c_str());
 
   ImGui::Separator();

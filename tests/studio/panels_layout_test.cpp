@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fixtures.hpp"
+#include "gui/model/leave_one_out.hpp"
 #include "gui/model/studio_controller.hpp"
 #include "gui/model/ui_state.hpp"
 #include "gui/panels/studio_window.hpp"
@@ -66,7 +67,8 @@ struct LayoutProject {
   LayoutProject() : dir("layout") {
     fs::ControllerOptions options;
     options.load_pixels = false;
-    const auto file = studio_test::write_project(dir.path(), 3, 40);
+    // 36 segments: fewer than calibration needs (50), so it refuses and says why.
+    const auto file = studio_test::write_project(dir.path(), 3, 12);
     controller.emplace(fieldlines::Project::load(file), file, options);
   }
   studio_test::TempDir dir;
@@ -82,8 +84,16 @@ TEST(StudioPanelsLayout, NothingRunsPastTheWindowsEdgeOnAnyTabWithALongStatusLin
     ui.status_message = "proposed 1234 labels (marking label-free, boundary disabled); ";
     ui.status_message.append(300, 'x');
     ui.status_message += " and a message far longer than any status bar at this size";
-    const std::size_t some[] = {0, 1};
-    ASSERT_TRUE(c.label(some, Label::Marking));  // "saved" and the rest of the notes
+    // Labels in every image (a test split of one image: "not enough to judge" lines) and
+    // proposals on too few segments for calibration (its long guidance in two places).
+    for (std::size_t img = 0; img < c.image_count(); ++img) {
+      c.select_image(img);
+      const std::size_t some[] = {0, 1, 2};
+      ASSERT_TRUE(c.label(some, Label::Marking));
+    }
+    c.propose();
+    ASSERT_FALSE(c.guidance().empty());
+    ASSERT_FALSE(fs::not_enough_to_judge(c.test_image_count()).empty());
     for (int panel = 0; panel < static_cast<int>(fs::Panel::Count); ++panel) {
       ui.show(static_cast<fs::Panel>(panel));
       for (int f = 0; f < 5; ++f) imgui.frame(c, ui);  // a tab shows a frame after it is asked for; a table settles in one
