@@ -9,14 +9,15 @@ void AutoTrainJob::start(AutoTrainInput input) {
   job_.start([input = std::move(input)](std::stop_token stop, const auto&) {
     const auto t0 = std::chrono::steady_clock::now();
     AutoTrainResult r;
-    r.made = proposal_thresholds(input.all, input.train, input.start, input.params, stop);
+    const Calibration fit = calibrate(input.all, input.start);  // label-free: shared with leave-one-out
+    r.made = proposal_thresholds(fit, input.train, input.start, input.params, stop);
     r.train_counts = count_labelled(input.train, r.made.thresholds);
     r.test_counts = count_labelled(input.test, r.made.thresholds);
     r.train_segments = input.train.size();
     r.test_segments = input.test.size();
     r.few_test_images = input.leave_one_out.has_value();
     if (input.leave_one_out)
-      r.leave_one_out = leave_one_image_out(input.all, *input.leave_one_out, input.start, input.params, stop);
+      r.leave_one_out = leave_one_image_out(fit, *input.leave_one_out, input.start, input.params, stop);
     r.elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return r;
   });

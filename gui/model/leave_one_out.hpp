@@ -5,7 +5,6 @@
 // out, the review loop's rule trained on the others, the counts pooled over every image), or
 // says that there is not enough to judge.
 #include <cstddef>
-#include <span>
 #include <stop_token>
 #include <string>
 
@@ -25,9 +24,9 @@ struct LeaveOneOut {
   std::size_t images = 0;  // labelled images held out in turn; 0: not computed (fewer than 2)
 };
 
-// `all`: every segment (calibration's input, labels ignored); `labelled`: the human labels with
-// their images. Stops early (images = 0) when `stop` is requested.
-LeaveOneOut leave_one_image_out(std::span<const Segment> all, const LabelledSet& labelled, const Thresholds& start,
+// `fit`: calibrate(every segment, start), label-free, so one fit serves every fold; `labelled`:
+// the human labels with their images. Stops early (images = 0) when `stop` is requested.
+LeaveOneOut leave_one_image_out(const Calibration& fit, const LabelledSet& labelled, const Thresholds& start,
                                 const ProposalParams& params, std::stop_token stop = {});
 
 }  // namespace fieldlines::studio

@@ -37,7 +37,9 @@ void draw_curve(const std::vector<studio::CurvePoint>& curve) {
   std::snprintf(right, sizeof right, "%zu labels", max_labels);
   draw->AddText({b.x - ImGui::CalcTextSize(right).x, b.y + 1}, text, right);
   // One polyline per class; a point where the class has no test data (n/a) breaks the line.
-  const auto series = [&](auto counts_of, Label label) {
+  // Boundary first and wider, marking on top and narrower: where both classes score alike (the
+  // same pooled F1) both stay visible, blue around magenta.
+  const auto series = [&](auto counts_of, Label label, float width) {
     const ImU32 col = colour(studio::label_colour(label));
     std::optional<ImVec2> prev;
     for (const studio::CurvePoint& p : curve) {
@@ -47,13 +49,13 @@ void draw_curve(const std::vector<studio::CurvePoint>& curve) {
         continue;
       }
       const ImVec2 q = at(p.labelled, c.f1());
-      if (prev) draw->AddLine(*prev, q, col, 2);
-      draw->AddCircleFilled(q, 2.5f, col);
+      if (prev) draw->AddLine(*prev, q, col, width);
+      draw->AddCircleFilled(q, width + 0.5f, col);
       prev = q;
     }
   };
-  series([](const studio::CurvePoint& p) -> const ClassCounts& { return p.test.marking; }, Label::Marking);
-  series([](const studio::CurvePoint& p) -> const ClassCounts& { return p.test.boundary; }, Label::Boundary);
+  series([](const studio::CurvePoint& p) -> const ClassCounts& { return p.test.boundary; }, Label::Boundary, 4);
+  series([](const studio::CurvePoint& p) -> const ClassCounts& { return p.test.marking; }, Label::Marking, 2);
 }
 }  // namespace
 

@@ -42,14 +42,15 @@ TEST(StudioLeaveOneOut, EachLabelledImageIsHeldOutOnceAndItsCountsPooled) {
   for (const auto& e : r.controller->project().images) all.insert(all.end(), e.segments.begin(), e.segments.end());
   fieldlines::ProposalParams params;
   params.train = fieldlines::protocol_spec(fieldlines::Protocol::Ours).train;
-  const fs::LeaveOneOut loo = fs::leave_one_image_out(all, labelled, {}, params);
+  const fieldlines::Calibration fit = fieldlines::calibrate(all);
+  const fs::LeaveOneOut loo = fs::leave_one_image_out(fit, labelled, {}, params);
   EXPECT_EQ(loo.images, 3u);
   // Every labelled marking is counted once, as found or missed, on the image that held it.
   EXPECT_EQ(static_cast<std::size_t>(loo.pooled.marking.tp + loo.pooled.marking.fn), labelled.count(Label::Marking));
   EXPECT_EQ(static_cast<std::size_t>(loo.pooled.boundary.tp + loo.pooled.boundary.fn), labelled.count(Label::Boundary));
   EXPECT_GT(loo.pooled.marking.f1(), 0.8);
   // One labelled image has nothing to hold out against.
-  EXPECT_EQ(fs::leave_one_image_out(all, labelled.subset(std::vector<std::size_t>{0, 1, 2}), {}, params).images, 0u);
+  EXPECT_EQ(fs::leave_one_image_out(fit, labelled.subset(std::vector<std::size_t>{0, 1, 2}), {}, params).images, 0u);
 }
 
 TEST(StudioLeaveOneOut, AutoTrainGivesLeaveOneOutFiguresWhileTheTestSplitHasTooFewImages) {

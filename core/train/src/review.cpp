@@ -39,9 +39,13 @@ std::string_view to_string(ProposalSource source) { return kSourceNames.name(sou
 
 ProposalThresholds proposal_thresholds(std::span<const Segment> all, std::span<const Segment> labelled,
                                        const Thresholds& start, const ProposalParams& params, std::stop_token stop) {
+  return proposal_thresholds(calibrate(all, start), labelled, start, params, stop);
+}
+
+ProposalThresholds proposal_thresholds(const Calibration& fit, std::span<const Segment> labelled,
+                                       const Thresholds& start, const ProposalParams& params, std::stop_token stop) {
   ProposalThresholds out;
   out.thresholds = start;
-  const Calibration fit = calibrate(all, start);
   const std::size_t labels = labelled.size();
   for (const TrainClass cls : {TrainClass::Boundary, TrainClass::Marking}) {
     const bool boundary = cls == TrainClass::Boundary;

@@ -13,6 +13,7 @@
 
 #include "fieldlines/detect/classifier.hpp"
 #include "fieldlines/detect/segment.hpp"
+#include "fieldlines/train/calibrate.hpp"
 #include "fieldlines/train/training.hpp"
 
 namespace fieldlines {
@@ -38,6 +39,11 @@ struct ProposalParams {
 };
 
 // `all`: every segment of the project (labels ignored); `labelled`: the human labels so far.
+// `fit`: calibrate(all, start), for callers that propose from several label sets over the same
+// segments (calibration never reads labels, so one fit serves them all).
+ProposalThresholds proposal_thresholds(const Calibration& fit, std::span<const Segment> labelled,
+                                       const Thresholds& start, const ProposalParams& params = {},
+                                       std::stop_token stop = {});
 // A marking class that can be neither trained nor calibrated keeps `start`'s thresholds; such a
 // boundary class is disabled. Never throws on
 // a lack of data; throws fieldlines::Error only for invalid `params`.
