@@ -29,13 +29,15 @@ void StudioController::switch_class(Label cls, bool on, const ClassThresholds& w
     class_thresholds(*proposal_thresholds_, cls) = class_thresholds(t, cls);
     refresh_proposals(*proposal_thresholds_);
   }
-  // The other class is trained with this one's test first (classifier.hpp): retrain it.
-  live_.labels_changed();
 }
 
 void StudioController::set_class_on(Label cls, bool on) {
   class_switch(cls).off_because.clear();  // the user's choice from now on
+  if (on == class_on(cls)) return;
   switch_class(cls, on, class_switch(cls).restore);
+  // The other class is trained with this one's test first (classifier.hpp): retrain it. A
+  // verdict of calibration needs none: the run that brought it trained with it.
+  live_.labels_changed();
 }
 
 Thresholds StudioController::proposal_start() const {
