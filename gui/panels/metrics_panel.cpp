@@ -15,7 +15,7 @@ void counts_table(const char* id, const Counts& train, const Counts* test, const
   if (!ImGui::BeginTable(id, 5, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) return;
   // The first column fits its longest name; the figures share what is left.
   ImGui::TableSetupColumn("class / split", ImGuiTableColumnFlags_WidthFixed,
-                          ImGui::CalcTextSize("boundary one out").x + ImGui::GetStyle().CellPadding.x * 2);
+                          ImGui::CalcTextSize("boundary train").x + ImGui::GetStyle().CellPadding.x * 2);
   for (const char* h : {"precision", "recall", "F1", "TP/FP/FN"}) ImGui::TableSetupColumn(h);
   ImGui::TableHeadersRow();
   const auto row = [](const std::string& name, const ClassCounts* c) {
@@ -54,8 +54,8 @@ void draw_metrics_panel(studio::StudioController& controller, UiState& ui) {
   if (few.empty()) {
     counts_table("counts", controller.train_counts(), &controller.test_counts(), "test");
   } else if (loo.images > 0) {
-    counts_table("counts", controller.train_counts(), &loo.pooled, "one out");
-    wrapped_hint(few + "; \"one out\": leave-one-image-out over " + std::to_string(loo.images) +
+    counts_table("counts", controller.train_counts(), &loo.pooled, "LOO");
+    wrapped_hint(few + "; LOO: leave-one-image-out over " + std::to_string(loo.images) +
                  " labelled images (each held out in turn, auto-train's rule trained on the others)");
   } else {
     counts_table("counts", controller.train_counts(), nullptr, "test");
