@@ -127,6 +127,17 @@ TEST(StudioClassSwitch, CalibrationTurnsOffABoundaryTheFieldLacksUntilLabelsShow
   const fieldlines::ThresholdsFile written = fieldlines::load_thresholds_file(exported);
   EXPECT_EQ(written.thresholds.boundary.thresholds, fieldlines::disabled_class());
   EXPECT_EQ(written.provenance["classes_off"]["boundary"], "calibration: " + why);
+  // Imported back, the file's choice is the user's: no longer calibration's verdict.
+  fs::import_thresholds(c, exported);
+  EXPECT_FALSE(c.class_on(Label::Boundary));
+  EXPECT_TRUE(c.class_off_reason(Label::Boundary).empty());
+  c.propose();
+  EXPECT_TRUE(c.class_off_reason(Label::Boundary).empty());  // a person's off is never re-asked
+  // On again by hand: the next proposals ask calibration, whose verdict stands.
+  c.set_class_on(Label::Boundary, true);
+  c.propose();
+  EXPECT_FALSE(c.class_on(Label::Boundary));
+  ASSERT_FALSE(c.class_off_reason(Label::Boundary).empty());
 
   // Three segments labelled boundary (and three others): trained from them, on again.
   c.select_image(0);
