@@ -9,13 +9,11 @@ std::string status_counters(const StudioController& c, double zoom, double frame
   std::size_t labelled = 0;
   for (const Segment& s : c.segments()) labelled += s.label != Label::Unlabelled;
   char line[160];
-  std::snprintf(line, sizeof line, "  |  %zu/%zu labelled  |  %zu to review  |  zoom %.0f%%  |  frame %.1f ms", labelled,
-                c.segments().size(), c.to_review(), zoom * 100, frame_ms);
-  const std::string image = c.image_count() ? "image " + std::to_string(c.current() + 1) + "/" +
-                                                  std::to_string(c.image_count()) + "  " +
-                                                  c.project().images[c.current()].path
-                                            : "image 0/0  -";
-  return image + line;
+  std::snprintf(line, sizeof line, "image %zu/%zu  |  %zu/%zu labelled  |  %zu to review  |  zoom %.0f%%  |  frame %.1f ms",
+                c.image_count() ? c.current() + 1 : 0, c.image_count(), labelled, c.segments().size(), c.to_review(),
+                zoom * 100, frame_ms);
+  // The path last: where the line is cut, the counts stay and the path's end goes (hover shows it).
+  return std::string(line) + "  |  " + (c.image_count() ? c.project().images[c.current()].path : std::string("-"));
 }
 
 std::vector<StatusNote> status_notes(const StudioController& c, const std::string& message) {

@@ -17,7 +17,7 @@ struct StatusNote {
   Severity severity = Severity::Info;
 };
 
-// "image 3/20  path  |  5/40 labelled  |  120 to review  |  zoom 100%  |  frame 12.0 ms"
+// "image 3/20  |  5/40 labelled  |  120 to review  |  zoom 100%  |  frame 12.0 ms  |  images/a.png"
 std::string status_counters(const StudioController& controller, double zoom, double frame_ms);
 
 // Most urgent first (errors, then warnings, then the rest), so a cut line keeps what matters.
