@@ -32,7 +32,7 @@ void StudioController::switch_class(Label cls, bool on, const ClassThresholds& w
 }
 
 void StudioController::set_class_on(Label cls, bool on) {
-  class_switch(cls).off_because.clear();  // the user's choice from now on
+  class_switch(cls).off_because.clear();  // the user decides, not calibration
   if (on == class_on(cls)) return;
   switch_class(cls, on, class_switch(cls).restore);
   // The other class is trained with this one's test first (classifier.hpp): retrain it. A

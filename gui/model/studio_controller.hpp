@@ -87,6 +87,12 @@ class StudioController {
   // (see poll), so dragging a slider does not write the file every frame.
   void set_thresholds(const Thresholds& thresholds);
   const Counts& train_counts() const { return train_counts_; }
+  const Counts& test_counts() const { return test_counts_; }
+  // Images holding a labelled segment of the test split: how much the test figures mean.
+  std::size_t test_image_count() const { return test_images_; }
+  // With fewer than kMinTestImages test images, the last retraining's leave-one-image-out
+  // figures of the review loop's rule (leave_one_out.hpp); images = 0 when there are none.
+  const LeaveOneOut& leave_one_out() const { return leave_one_out_; }
 
   // --- per-class on/off (class_switch.hpp; class_switches.cpp). `cls` is Marking or Boundary.
   bool class_on(Label cls) const;
@@ -99,12 +105,6 @@ class StudioController {
   // What calibration refused that the labels do not cover yet, and what to do (empty: nothing);
   // from the last proposals or retraining.
   const std::string& guidance() const { return guidance_; }
-  const Counts& test_counts() const { return test_counts_; }
-  // Images holding a labelled segment of the test split: how much the test figures mean.
-  std::size_t test_image_count() const { return test_images_; }
-  // With fewer than kMinTestImages test images, the last retraining's leave-one-image-out
-  // figures of the review loop's rule (leave_one_out.hpp); images = 0 when there are none.
-  const LeaveOneOut& leave_one_out() const { return leave_one_out_; }
 
   // --- the test split: split_train_test (fieldlines/train/splits.hpp) of the LABELLED segments
   // with the project's SplitSpec, so the studio tests on what `fieldlines train` would with the

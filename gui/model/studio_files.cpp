@@ -54,7 +54,7 @@ void import_thresholds(StudioController& controller, const std::filesystem::path
   const ThresholdsFile file = load_thresholds_file(path);
   controller.set_detector_params(file.detector);
   controller.set_thresholds(file.thresholds);
-  // The file's classes are a person's choice now, not calibration's verdict: P leaves them be.
+  // The file's classes are a person's choice, not calibration's verdict: P leaves them be.
   for (const Label cls : kSwitchableClasses) controller.set_class_on(cls, controller.class_on(cls));
   controller.flush();
 }
