@@ -39,8 +39,41 @@ TEST(Review, ProposalsComeFromCalibrationUntilAClassHasEnoughLabels) {
   const std::vector<fl::Segment> grey(all.begin() + k.markings + k.boundaries, all.end());
   const fl::ProposalThresholds lost = fl::proposal_thresholds(grey, {}, fl::Thresholds{});
   EXPECT_EQ(lost.marking, fl::ProposalSource::Start);
-  EXPECT_EQ(lost.thresholds, fl::Thresholds{});
+  EXPECT_EQ(lost.thresholds.marking, fl::Thresholds{}.marking);
   EXPECT_NE(lost.note.find("marking"), std::string::npos) << lost.note;
+  EXPECT_FALSE(lost.marking_refused.empty());
+  // The boundary calibration refuses is disabled, as `fieldlines calibrate` writes it.
+  EXPECT_EQ(lost.boundary, fl::ProposalSource::Disabled);
+  EXPECT_EQ(lost.thresholds.boundary.thresholds, fl::disabled_class());
+  EXPECT_FALSE(lost.boundary_refused.empty());
+}
+
+TEST(Review, AClassCalibrationRefusesIsTrainedFromAFewLabels) {
+  const fl::test::KnownField k = fl::test::known_field(4);
+  const std::vector<fl::Segment> all = unlabelled(k.segments);
+  const std::vector<fl::Segment> grey(all.begin() + k.markings + k.boundaries, all.end());
+  // Three markings and three non-features: too few to train a class calibration fits (10), enough
+  // for one it refuses.
+  std::vector<fl::Segment> labelled(k.segments.begin(), k.segments.begin() + 3);
+  labelled.insert(labelled.end(), k.segments.end() - 3, k.segments.end());
+  const fl::ProposalThresholds few = fl::proposal_thresholds(grey, labelled, fl::Thresholds{});
+  EXPECT_EQ(few.marking, fl::ProposalSource::Trained);
+  EXPECT_TRUE(few.marking_refused.empty());
+  for (const fl::Segment& s : labelled) EXPECT_EQ(fl::classify(s, few.thresholds), s.label);
+  EXPECT_EQ(fl::proposal_thresholds(all, labelled, fl::Thresholds{}).marking, fl::ProposalSource::LabelFree);
+}
+
+TEST(Review, AClassSwitchedOffStaysOff) {
+  const fl::test::KnownField k = fl::test::known_field(4);
+  fl::Thresholds start;
+  start.boundary.thresholds = fl::disabled_class();
+  // Enough boundary labels to train it: still off.
+  const fl::ProposalThresholds made = fl::proposal_thresholds(unlabelled(k.segments), k.segments, start);
+  EXPECT_EQ(made.boundary, fl::ProposalSource::Disabled);
+  EXPECT_EQ(made.thresholds.boundary.thresholds, fl::disabled_class());
+  EXPECT_TRUE(made.boundary_refused.empty());
+  EXPECT_NE(made.marking, fl::ProposalSource::Disabled);
+  EXPECT_EQ(fl::to_string(fl::ProposalSource::Disabled), "disabled");
 }
 
 TEST(Review, TheMarginIsZeroOnABoundaryAndGrowsAwayFromIt) {

@@ -9,11 +9,15 @@ void AutoTrainJob::start(AutoTrainInput input) {
   job_.start([input = std::move(input)](std::stop_token stop, const auto&) {
     const auto t0 = std::chrono::steady_clock::now();
     AutoTrainResult r;
-    r.made = proposal_thresholds(input.all, input.train, input.start, input.params, stop);
+    const Calibration fit = calibrate(input.all, input.start);  // label-free: shared with leave-one-out
+    r.made = proposal_thresholds(fit, input.train, input.start, input.params, stop);
     r.train_counts = count_labelled(input.train, r.made.thresholds);
     r.test_counts = count_labelled(input.test, r.made.thresholds);
     r.train_segments = input.train.size();
     r.test_segments = input.test.size();
+    r.few_test_images = input.leave_one_out.has_value();
+    if (input.leave_one_out)
+      r.leave_one_out = leave_one_image_out(fit, *input.leave_one_out, input.start, input.params, stop);
     r.elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return r;
   });
@@ -46,7 +50,14 @@ std::optional<AutoTrainResult> LiveRetraining::poll() {
   std::optional<AutoTrainResult> r = job_.poll();
   if (!job_.error().empty()) summary_ = "retraining failed: " + job_.error();
   if (!r || !on_) return std::nullopt;  // turned off while it ran: the user's thresholds stay
-  curve_.push_back({r->train_segments + r->test_segments, r->test_segments, r->test_counts});
+  CurvePoint point{r->train_segments + r->test_segments, r->test_segments, r->test_counts};
+  if (r->leave_one_out.images > 0) {
+    point.test = r->leave_one_out.pooled;
+    point.leave_one_out = true;
+  } else if (r->few_test_images) {
+    point.judged = false;
+  }
+  curve_.push_back(point);
   char line[160];
   std::snprintf(line, sizeof line, "retrained on %zu train-split labels in %.0f ms (marking %s, boundary %s)",
                 r->train_segments, r->elapsed_ms, std::string(to_string(r->made.marking)).c_str(),

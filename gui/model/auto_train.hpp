@@ -11,6 +11,7 @@
 #include "fieldlines/train/metrics.hpp"
 #include "fieldlines/train/review.hpp"
 #include "gui/model/job.hpp"
+#include "gui/model/leave_one_out.hpp"
 
 namespace fieldlines::studio {
 
@@ -20,12 +21,16 @@ struct AutoTrainInput {
   std::vector<Segment> train, test;  // the labelled segments of each split
   Thresholds start;
   ProposalParams params;
+  // With too few test images: every label with its image, for leave-one-image-out figures.
+  std::optional<LabelledSet> leave_one_out;
 };
 
 struct AutoTrainResult {
   ProposalThresholds made;
   Counts train_counts, test_counts;  // of made.thresholds on each split
   std::size_t train_segments = 0, test_segments = 0;
+  bool few_test_images = false;  // leave-one-out was asked for
+  LeaveOneOut leave_one_out;     // images = 0 when not asked for or fewer than 2 labelled images
   double elapsed_ms = 0;
 };
 
@@ -33,6 +38,10 @@ struct AutoTrainResult {
 struct CurvePoint {
   std::size_t labelled = 0, test_segments = 0;
   Counts test;  // on the test split (empty classes are n/a, ClassCounts::empty)
+  // Too few test images to judge (leave_one_out.hpp): `test` holds leave-one-image-out counts
+  // when there were labelled images enough, else the point has no figures (judged = false).
+  bool leave_one_out = false;
+  bool judged = true;
 };
 
 class AutoTrainJob {

@@ -16,12 +16,15 @@ void StudioController::start_auto_train() {
     return;
   }
   in.all = all_segments();
-  in.start = project_.thresholds;
+  in.start = proposal_start();
   in.params = proposal_params();
+  if (test_images_ < kMinTestImages) in.leave_one_out = project_.labelled();
   live_.start(std::move(in));
 }
 
 void StudioController::adopt_auto_train(const AutoTrainResult& r) {
+  follow_proposals(r.made);
+  leave_one_out_ = r.leave_one_out;
   set_thresholds(r.made.thresholds);
   const bool has_proposals = std::any_of(project_.images.begin(), project_.images.end(),
                                          [](const ImageEntry& e) { return !e.proposals.empty(); });

@@ -36,11 +36,13 @@ std::size_t StudioController::refresh_proposals(const Thresholds& t) {
 std::string StudioController::propose() {
   const LabelledSet labelled = project_.labelled();
   const ProposalThresholds made =
-      proposal_thresholds(all_segments(), labelled.segments, project_.thresholds, proposal_params());
+      proposal_thresholds(all_segments(), labelled.segments, proposal_start(), proposal_params());
+  follow_proposals(made);
   const std::size_t proposed = refresh_proposals(made.thresholds);
   proposal_summary_ = std::to_string(proposed) + " proposals (marking " + std::string(to_string(made.marking)) +
                       ", boundary " + std::string(to_string(made.boundary)) + ")";
-  if (!made.note.empty()) proposal_summary_ += "; " + made.note;
+  // With guidance (its own line in the status bar and the Train tab) the note would repeat it.
+  if (guidance_.empty() && !made.note.empty()) proposal_summary_ += "; " + made.note;
   autosave();
   return proposal_summary_;
 }

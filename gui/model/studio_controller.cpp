@@ -8,6 +8,7 @@
 
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/data/image_io.hpp"
+#include "fieldlines/train/calibrate.hpp"
 #include "fieldlines/train/splits.hpp"
 
 namespace fieldlines::studio {
@@ -380,7 +381,11 @@ double StudioController::mean_detect_ms() const {
 bool StudioController::apply_training_result() {
   const auto& outcome = training_.outcome();
   if (!outcome || !outcome->ok()) return false;
-  set_thresholds(outcome->value().run.thresholds);
+  Thresholds t = outcome->value().run.thresholds;
+  // PSO over both classes fits a switched-off one too: the switch stands.
+  for (const Label cls : kSwitchableClasses)
+    if (!class_on(cls)) class_thresholds(t, cls) = class_thresholds(project_.thresholds, cls);
+  set_thresholds(t);
   flush();  // a deliberate act, not a drag: on disk at once
   return true;
 }

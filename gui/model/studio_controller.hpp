@@ -13,6 +13,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "gui/model/auto_train.hpp"
+#include "gui/model/class_switch.hpp"
 #include "gui/model/project_detection.hpp"
 #include "gui/model/project_saver.hpp"
 #include "fieldlines/detect/classifier.hpp"
@@ -87,6 +88,23 @@ class StudioController {
   void set_thresholds(const Thresholds& thresholds);
   const Counts& train_counts() const { return train_counts_; }
   const Counts& test_counts() const { return test_counts_; }
+  // Images holding a labelled segment of the test split: how much the test figures mean.
+  std::size_t test_image_count() const { return test_images_; }
+  // With fewer than kMinTestImages test images, the last retraining's leave-one-image-out
+  // figures of the review loop's rule (leave_one_out.hpp); images = 0 when there are none.
+  const LeaveOneOut& leave_one_out() const { return leave_one_out_; }
+
+  // --- per-class on/off (class_switch.hpp; class_switches.cpp). `cls` is Marking or Boundary.
+  bool class_on(Label cls) const;
+  // The user's choice: off keeps the class's thresholds to give back when it is turned on again.
+  // Predictions, metrics, proposals and the exported file follow at once.
+  void set_class_on(Label cls, bool on);
+  // Calibration's reason when calibration turned the class off (proposals found no such class
+  // and too few of its labels); empty when it is on or the user turned it off.
+  const std::string& class_off_reason(Label cls) const;
+  // What calibration refused that the labels do not cover yet, and what to do (empty: nothing);
+  // from the last proposals or retraining.
+  const std::string& guidance() const { return guidance_; }
 
   // --- the test split: split_train_test (fieldlines/train/splits.hpp) of the LABELLED segments
   // with the project's SplitSpec, so the studio tests on what `fieldlines train` would with the
@@ -203,6 +221,14 @@ class StudioController {
   std::vector<Segment> all_segments() const;
   std::pair<std::vector<Segment>, std::vector<Segment>> labelled_by_split() const;  // train, test
   void adopt_auto_train(const AutoTrainResult& result);
+  ClassSwitch& class_switch(Label cls);
+  const ClassSwitch& class_switch(Label cls) const;
+  // Switches without clearing calibration's reason; on gives the class `when_on`.
+  void switch_class(Label cls, bool on, const ClassThresholds& when_on);
+  // What proposals start from: the project's thresholds, a class calibration turned off tried again.
+  Thresholds proposal_start() const;
+  // After proposals or a retraining: calibration's verdict on each class, and the guidance.
+  void follow_proposals(const ProposalThresholds& made);
 
   Project project_;
   std::filesystem::path project_file_;
@@ -231,6 +257,9 @@ class StudioController {
   std::string proposal_summary_;
   std::optional<std::size_t> focus_request_;
   LiveRetraining live_{options_.auto_train};
+  ClassSwitch switches_[2] = {{Thresholds{}.marking.thresholds, {}}, {Thresholds{}.boundary.thresholds, {}}};
+  std::string guidance_;
+  LeaveOneOut leave_one_out_;
 };
 
 }  // namespace fieldlines::studio

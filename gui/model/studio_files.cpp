@@ -40,6 +40,13 @@ void export_thresholds(const StudioController& controller, const std::filesystem
                      {"counts", {{"train_segments", train_segments}, {"test_segments", test_segments}}},
                      {"train", part(controller.train_counts(), train_segments)},
                      {"test", part(controller.test_counts(), test_segments)}};
+  // Why a class is off, for whoever reads the file later: calibration's reason or the user's choice.
+  for (const Label cls : kSwitchableClasses) {
+    if (controller.class_on(cls)) continue;
+    const std::string& why = controller.class_off_reason(cls);
+    file.provenance["classes_off"][cls == Label::Marking ? "marking" : "boundary"] =
+        why.empty() ? "switched off in the studio" : "calibration: " + why;
+  }
   save_thresholds_file(path, file);
 }
 
@@ -47,6 +54,8 @@ void import_thresholds(StudioController& controller, const std::filesystem::path
   const ThresholdsFile file = load_thresholds_file(path);
   controller.set_detector_params(file.detector);
   controller.set_thresholds(file.thresholds);
+  // The file's classes are a person's choice, not calibration's verdict: P leaves them be.
+  for (const Label cls : kSwitchableClasses) controller.set_class_on(cls, controller.class_on(cls));
   controller.flush();
 }
 

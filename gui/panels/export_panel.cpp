@@ -1,11 +1,13 @@
 // Export tab: write the robot's thresholds file (path entry + folder browser), show it, import one.
 // The form, its files and paths are gui/model/export_form.hpp's; this draws it.
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "gui/model/ellipsize.hpp"
 #include "gui/model/export_form.hpp"
 #include "gui/panels/panels.hpp"
 
@@ -16,12 +18,17 @@ namespace {
 // replaces the folder part of the export path.
 void folder_browser(studio::ExportForm& form) {
   const std::filesystem::path& folder = form.browsed_folder();
-  ImGui::TextDisabled("%s", folder.string().c_str());
+  wrapped_hint(folder.string());
   ImGui::BeginChild("folders", {0, 120}, true);
   std::filesystem::path chosen;
   if (ImGui::Selectable("..")) chosen = folder.parent_path();
+  const auto measure = [](std::string_view t) { return ImGui::CalcTextSize(t.data(), t.data() + t.size()).x; };
   for (const std::filesystem::path& f : form.subfolders(ImGui::GetTime())) {
-    if (ImGui::Selectable((f.filename().string() + "/").c_str())) chosen = f;
+    // A long name is cut to the list's width; the whole name shows on hover.
+    const std::string name = f.filename().string() + "/";
+    const std::string shown = studio::ellipsize(name, ImGui::GetContentRegionAvail().x, measure);
+    if (ImGui::Selectable((shown + "##" + name).c_str())) chosen = f;
+    if (shown != name && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", name.c_str());
   }
   ImGui::EndChild();
   if (!chosen.empty()) form.choose_folder(chosen);
@@ -36,17 +43,21 @@ void draw_export_panel(studio::StudioController& controller, UiState& ui) {
   if (ImGui::BeginTable("thresholds", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) {
     for (const char* header : {"class", "min projection", "max angle (deg)", "min length"}) ImGui::TableSetupColumn(header);
     ImGui::TableHeadersRow();
-    for (const auto& [name, c] : {std::pair{"marking", t.marking.thresholds}, std::pair{"boundary", t.boundary.thresholds}}) {
+    for (const Label cls : studio::kSwitchableClasses) {
+      const ClassThresholds& c = studio::class_thresholds(t, cls);
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(name);
+      ImGui::TextUnformatted(cls == Label::Marking ? "marking" : "boundary");
       for (const float value : {c.min_projection, c.max_angle_deg, c.min_length}) {
         ImGui::TableNextColumn();
-        ImGui::Text("%.2f", value);
+        if (controller.class_on(cls)) ImGui::Text("%.2f", value);
+        else ImGui::TextDisabled("off");
       }
     }
     ImGui::EndTable();
   }
+  // Written into the file: an off class gets thresholds no segment passes.
+  for (const Label cls : studio::kSwitchableClasses) class_switch(controller, cls);
   ImGui::Separator();
   studio::ExportForm& form = ui.export_form;
   form.update(controller);

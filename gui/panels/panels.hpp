@@ -30,6 +30,10 @@ void wrapped_text(const ImVec4& colour, const std::string& text);
 // The same in the style's dimmed text colour, for hints.
 void wrapped_hint(const std::string& text);
 
+// The class's on/off checkbox (Thresholds and Export tabs), with calibration's reason under it
+// when calibration turned it off. Returns whether the class is on.
+bool class_switch(studio::StudioController& controller, Label cls);
+
 // The colour legend of the current overlay mode (also drawn on the Label panel).
 void draw_legend(studio::OverlayMode mode);
 

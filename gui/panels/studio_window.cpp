@@ -1,61 +1,94 @@
 #include "gui/panels/studio_window.hpp"
 
+#include <algorithm>
+#include <cfloat>
 #include <cstdio>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <imgui.h>
 
+#include "gui/model/ellipsize.hpp"
 #include "gui/model/shortcuts.hpp"
+#include "gui/model/status_line.hpp"
 #include "gui/panels/image_view.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
 
 void draw_shortcut_help() {
-  if (!ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_SizingFixedFit)) return;
+  // The keys fit their column; the descriptions take the rest of the panel's width and wrap.
+  if (!ImGui::BeginTable("shortcuts", 2)) return;
+  ImGui::TableSetupColumn("input", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
   for (const studio::Shortcut& s : studio::shortcuts()) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(studio::input_name(s).c_str());
     ImGui::TableNextColumn();
-    ImGui::TextDisabled("%.*s", static_cast<int>(s.description.size()), s.description.data());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%.*s", static_cast<int>(s.description.size()), s.description.data());
+    ImGui::PopStyleColor();
   }
   ImGui::EndTable();
 }
 
 namespace {
 
-void draw_status_bar(const studio::StudioController& controller, const UiState& ui) {
-  const auto segments = controller.segments();
-  std::size_t labelled = 0;
-  for (const Segment& s : segments) labelled += s.label != Label::Unlabelled;
-  ImGui::Text("image %zu/%zu  %s  |  %zu/%zu labelled  |  %zu to review  |  zoom %.0f%%  |  frame %.1f ms",
-              controller.image_count() ? controller.current() + 1 : 0, controller.image_count(),
-              controller.image_count() ? controller.project().images[controller.current()].path.c_str() : "-",
-              labelled, segments.size(), controller.to_review(), ui.image_view.view.scale() * 100,
-              ui.frame_stats ? ui.frame_stats->median_ms() : 0.0);
-  if (!ui.status_message.empty()) {
-    ImGui::SameLine();
-    ImGui::TextDisabled("  %s", ui.status_message.c_str());
+ImVec4 severity_colour(studio::Severity s) {
+  switch (s) {
+    case studio::Severity::Error: return {1, 0.4f, 0.4f, 1};
+    case studio::Severity::Warning: return {1, 0.7f, 0.3f, 1};
+    default: return ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
   }
+}
+
+// `text` cut with "..." to `width`; the full text (wrapped, inside the window) on hover.
+void fitted_text(const std::string& text, float width, const ImVec4& colour, const std::vector<studio::StatusNote>& all) {
+  const std::string shown =
+      studio::ellipsize(text, width, [](std::string_view t) { return ImGui::CalcTextSize(t.data(), t.data() + t.size()).x; });
+  ImGui::TextColored(colour, "%s", shown.c_str());
+  if (shown == text || !ImGui::IsItemHovered()) return;
+  ImGui::SetNextWindowSizeConstraints({0, 0}, {ImGui::GetMainViewport()->WorkSize.x * 0.6f, FLT_MAX});
+  ImGui::BeginTooltip();
+  ImGui::PushTextWrapPos(ImGui::GetMainViewport()->WorkSize.x * 0.6f - ImGui::GetStyle().WindowPadding.x * 2);
+  if (all.empty()) ImGui::TextUnformatted(text.c_str());
+  for (const studio::StatusNote& n : all) {
+    ImGui::PushStyleColor(ImGuiCol_Text, n.severity == studio::Severity::Info ? ImGui::GetStyleColorVec4(ImGuiCol_Text)
+                                                                              : severity_colour(n.severity));
+    ImGui::TextUnformatted(n.text.c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::PopTextWrapPos();
+  ImGui::EndTooltip();
+}
+
+// One line: the counters, the detection progress while it runs, then the notes, each cut to
+// the room left so nothing runs past the window's right edge.
+void draw_status_bar(const studio::StudioController& controller, const UiState& ui) {
+  const float gap = ImGui::GetStyle().ItemSpacing.x;
+  const auto room = [] { return ImGui::GetContentRegionAvail().x; };
+  const std::string counters = studio::status_counters(controller, ui.image_view.view.scale(),
+                                                       ui.frame_stats ? ui.frame_stats->median_ms() : 0.0);
+  const std::vector<studio::StatusNote> notes = studio::status_notes(controller, ui.status_message);
+  std::string joined;
+  for (const studio::StatusNote& n : notes) joined += (joined.empty() ? "" : "  |  ") + n.text;
+  // The counters keep at least half the line; the notes get the rest, the counters what they leave.
+  const float notes_width = notes.empty() ? 0 : ImGui::CalcTextSize(joined.c_str()).x + gap * 3;
+  const float counters_width =
+      std::min(ImGui::CalcTextSize(counters.c_str()).x, std::max(room() * 0.5f, room() - notes_width));
+  fitted_text(counters, counters_width, ImGui::GetStyleColorVec4(ImGuiCol_Text), {});
   if (const studio::DetectionJob& job = controller.detection(); job.running()) {
     // Visible from every tab: detection of a whole folder takes a while on a laptop.
-    ImGui::SameLine();
     char overlay[48];
     std::snprintf(overlay, sizeof overlay, "detecting %zu/%zu", job.done(), job.total());
-    ImGui::ProgressBar(job.progress(), {200, 0}, overlay);
-  } else if (const std::string detection = controller.detection_report().summary(); !detection.empty()) {
     ImGui::SameLine();
-    const bool failed = !controller.detection_report().failed.empty();
-    ImGui::TextColored(failed ? ImVec4{1, 0.5f, 0.3f, 1} : ImVec4{0.6f, 0.6f, 0.6f, 1}, "  %s", detection.c_str());
+    ImGui::ProgressBar(job.progress(), {std::min(200.f, std::max(room(), 1.f)), 0}, overlay);
   }
-  if (!controller.save_error().empty()) {
-    ImGui::SameLine();
-    ImGui::TextColored({1, 0.4f, 0.4f, 1}, "  autosave failed: %s", controller.save_error().c_str());
-  } else if (controller.save_count() > 0) {
-    ImGui::SameLine();
-    ImGui::TextDisabled("  saved");
-  }
+  if (notes.empty()) return;
+  ImGui::SameLine(0, gap * 3);
+  fitted_text(joined, room(), severity_colour(notes.front().severity), notes);
 }
 
 }  // namespace
@@ -74,7 +107,9 @@ void draw_studio(studio::StudioController& controller, UiState& ui, const Canvas
   const float side_width = 400;
   const float status_height = ImGui::GetFrameHeightWithSpacing();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
-  draw_image_view(controller, ui.image_view, texture, {avail.x - side_width - 6, avail.y - status_height});
+  // The canvas leaves the side panel its width and the spacing SameLine puts between them.
+  draw_image_view(controller, ui.image_view, texture,
+                  {avail.x - side_width - ImGui::GetStyle().ItemSpacing.x, avail.y - status_height});
   ImGui::SameLine();
   ImGui::BeginChild("side", {side_width, avail.y - status_height});
   if (ImGui::BeginTabBar("panels")) {

@@ -8,20 +8,31 @@
 
 #include "fieldlines/detect/detector_params.hpp"
 #include "gui/model/figures.hpp"
+#include "gui/model/leave_one_out.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
 
 namespace {
+// A slider's bar takes what its label leaves of the panel's width, so the label is never cut.
+void fit_next_slider(const char* label) {
+  const float avail = ImGui::GetContentRegionAvail().x;
+  const float text = ImGui::CalcTextSize(label, nullptr, true).x + ImGui::GetStyle().ItemInnerSpacing.x;
+  ImGui::SetNextItemWidth(std::max(avail - text, avail * 0.35f));
+}
+
 // While a slider is dragged the controller saves after a short pause; releasing it saves at once.
 bool class_sliders(const char* name, ClassThresholds& t, bool& released) {
   bool changed = false;
   ImGui::PushID(name);
   ImGui::TextUnformatted(name);
+  fit_next_slider("min projection");
   changed |= ImGui::SliderFloat("min projection", &t.min_projection, 0, 255, "%.1f");
   released |= ImGui::IsItemDeactivatedAfterEdit();
+  fit_next_slider("max angle (deg)");
   changed |= ImGui::SliderFloat("max angle (deg)", &t.max_angle_deg, 0, 90, "%.1f");
   released |= ImGui::IsItemDeactivatedAfterEdit();
+  fit_next_slider("min length");
   changed |= ImGui::SliderFloat("min length", &t.min_length, 0, 400, "%.0f");
   released |= ImGui::IsItemDeactivatedAfterEdit();
   ImGui::PopID();
@@ -35,6 +46,7 @@ bool detector_slider(const ParamSpec& spec, DetectorParams& p) {
   std::replace(label.begin(), label.end(), '_', ' ');
   if (!spec.unit.empty()) label += " (" + std::string(spec.unit) + ")";
   const auto lo = static_cast<float>(spec.slider.lo), hi = static_cast<float>(spec.slider.hi);
+  fit_next_slider(label.c_str());
   if (const auto* member = std::get_if<int DetectorParams::*>(&spec.member)) {
     ImGui::SliderInt(label.c_str(), &(p.*(*member)), static_cast<int>(lo), static_cast<int>(hi));
   } else if (const auto* real = std::get_if<double DetectorParams::*>(&spec.member)) {
@@ -58,19 +70,25 @@ void counts_line(const char* name, const ClassCounts& c) {
 }  // namespace
 
 void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/) {
-  Thresholds t = controller.thresholds();
   if (controller.auto_train()) ImGui::TextDisabled("auto-train is on: moving a slider turns it off");
   bool released = false;
-  bool changed = class_sliders("marking (white <-> green)", t.marking.thresholds, released);
-  ImGui::Separator();
-  changed |= class_sliders("boundary (black -> green)", t.boundary.thresholds, released);
-  if (ImGui::Button("Reset to defaults")) {
-    t = Thresholds{};
-    changed = released = true;
-  }
-  if (changed) {
+  const auto hand_tuned = [&](const Thresholds& t) {
     controller.set_auto_train(false);  // otherwise the next label change overwrites the hand tuning
     controller.set_thresholds(t);
+  };
+  for (const Label cls : studio::kSwitchableClasses) {
+    if (cls == Label::Boundary) ImGui::Separator();
+    const bool on = class_switch(controller, cls);
+    Thresholds t = controller.thresholds();  // after the switch, which may change them
+    ImGui::BeginDisabled(!on);
+    if (class_sliders(cls == Label::Marking ? "marking (white <-> green)" : "boundary (black -> green)",
+                      studio::class_thresholds(t, cls), released))
+      hand_tuned(t);
+    ImGui::EndDisabled();
+  }
+  if (ImGui::Button("Reset to defaults")) {
+    hand_tuned(Thresholds{});
+    released = true;
   }
   if (released) controller.flush();
   ImGui::Separator();
@@ -78,8 +96,13 @@ void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/
   counts_line("marking", controller.train_counts().marking);
   counts_line("boundary", controller.train_counts().boundary);
   ImGui::TextDisabled("test split:");
-  counts_line("marking", controller.test_counts().marking);
-  counts_line("boundary", controller.test_counts().boundary);
+  if (const std::string few = studio::not_enough_to_judge(controller.test_image_count());
+      controller.test_segment_count() && !few.empty()) {
+    wrapped_hint(few + " (Metrics tab: leave-one-image-out figures)");
+  } else {
+    counts_line("marking", controller.test_counts().marking);
+    counts_line("boundary", controller.test_counts().boundary);
+  }
   ImGui::TextWrapped("%s", controller.split_summary().c_str());
 
   ImGui::Separator();

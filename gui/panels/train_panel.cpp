@@ -2,12 +2,15 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include <imgui.h>
 
 #include "gui/model/figures.hpp"
+#include "gui/model/leave_one_out.hpp"
 #include "gui/panels/panels.hpp"
 
 namespace fieldlines::gui {
@@ -100,7 +103,7 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
     // A marker, not the button's tooltip: that one covered the progress line under the button.
     ImGui::SameLine();
     help_marker(("trains on the train split, reports both splits\n" + controller.split_summary()).c_str());
-    if (controller.test_segment_count() == 0) ImGui::TextColored({1, 0.7f, 0.3f, 1}, "%s", controller.split_summary().c_str());
+    if (controller.test_segment_count() == 0) wrapped_text({1, 0.7f, 0.3f, 1}, controller.split_summary());
   } else if (ImGui::Button("Stop")) {
     ui.training.toggle(controller);
   }
@@ -137,7 +140,13 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui) {
       const studio::TrainingResult& r = outcome->value();
       ImGui::Text("%s after %d iterations, score %.3f", r.run.cancelled ? "stopped" : "finished", r.run.iterations_run,
                   r.run.score);
+      const std::string few =
+          controller.test_segment_count() ? studio::not_enough_to_judge(controller.test_image_count()) : "";
       for (const auto& [name, c] : {std::pair{"train", r.train_counts}, std::pair{"test", r.test_counts}}) {
+        if (std::string_view(name) == "test" && !few.empty()) {  // one image's figures would mislead
+          ImGui::Text("%-5s %s", name, few.c_str());
+          continue;
+        }
         ImGui::Text("%-5s marking P %s R %s | boundary P %s R %s", name,
                     studio::format_figure(c.marking, c.marking.precision()).c_str(),
                     studio::format_figure(c.marking, c.marking.recall()).c_str(),

@@ -18,6 +18,21 @@ void help_marker(const char* text) {
   ImGui::EndTooltip();
 }
 
+bool class_switch(studio::StudioController& controller, Label cls) {
+  const char* name = cls == Label::Marking ? "marking on" : "boundary on";
+  bool on = controller.class_on(cls);
+  if (ImGui::Checkbox(name, &on)) controller.set_class_on(cls, on);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("off: no segment is %s, in predictions, proposals and the exported file\n"
+                      "(its thresholds never pass, as `fieldlines calibrate` writes a class it refuses)",
+                      cls == Label::Marking ? "a marking" : "a boundary");
+  }
+  if (const std::string& why = controller.class_off_reason(cls); !why.empty()) {
+    wrapped_hint("off by calibration: " + why);
+  }
+  return on;
+}
+
 void wrapped_text(const ImVec4& colour, const std::string& text) {
   ImGui::PushStyleColor(ImGuiCol_Text, colour);
   ImGui::TextWrapped("%s", text.c_str());

@@ -31,22 +31,34 @@ std::size_t count(std::span<const Segment> s, Label l) {
 
 }  // namespace
 
-constexpr EnumNames<ProposalSource, 3> kSourceNames{
-    {{{ProposalSource::LabelFree, "label-free"}, {ProposalSource::Trained, "trained"}, {ProposalSource::Start, "start"}}}};
+constexpr EnumNames<ProposalSource, 4> kSourceNames{{{{ProposalSource::LabelFree, "label-free"},
+                                                     {ProposalSource::Trained, "trained"},
+                                                     {ProposalSource::Start, "start"},
+                                                     {ProposalSource::Disabled, "disabled"}}}};
 std::string_view to_string(ProposalSource source) { return kSourceNames.name(source); }
 
 ProposalThresholds proposal_thresholds(std::span<const Segment> all, std::span<const Segment> labelled,
                                        const Thresholds& start, const ProposalParams& params, std::stop_token stop) {
+  return proposal_thresholds(calibrate(all, start), labelled, start, params, stop);
+}
+
+ProposalThresholds proposal_thresholds(const Calibration& fit, std::span<const Segment> labelled,
+                                       const Thresholds& start, const ProposalParams& params, std::stop_token stop) {
   ProposalThresholds out;
   out.thresholds = start;
-  const Calibration fit = calibrate(all, start);
   const std::size_t labels = labelled.size();
   for (const TrainClass cls : {TrainClass::Boundary, TrainClass::Marking}) {
     const bool boundary = cls == TrainClass::Boundary;
     const std::size_t positives = count(labelled, boundary ? Label::Boundary : Label::Marking);
     ProposalSource& source = boundary ? out.boundary : out.marking;
     ClassThresholds& target = boundary ? out.thresholds.boundary.thresholds : out.thresholds.marking.thresholds;
-    if (positives >= params.min_labels_to_train && labels - positives >= params.min_labels_to_train) {
+    if (target == disabled_class()) {  // switched off: never proposed
+      source = ProposalSource::Disabled;
+      continue;
+    }
+    const ClassCalibration& c = boundary ? fit.boundary : fit.marking;
+    const std::size_t enough = c.thresholds ? params.min_labels_to_train : params.min_labels_without_calibration;
+    if (positives >= enough && labels - positives >= enough) {
       TrainParams p = params.train;
       p.target = cls;
       const TrainResult r = train(labelled, out.thresholds, p, {}, stop);
@@ -56,13 +68,18 @@ ProposalThresholds proposal_thresholds(std::span<const Segment> all, std::span<c
         continue;
       }
     }
-    const ClassCalibration& c = boundary ? fit.boundary : fit.marking;
     if (c.thresholds) {
       target = *c.thresholds;
       source = ProposalSource::LabelFree;
-    } else {
-      if (!out.note.empty()) out.note += "; ";
-      out.note += std::string(boundary ? "boundary" : "marking") + ": " + c.refused;
+      continue;
+    }
+    (boundary ? out.boundary_refused : out.marking_refused) = c.refused;
+    if (!out.note.empty()) out.note += "; ";
+    out.note += std::string(boundary ? "boundary" : "marking") + ": " + c.refused;
+    // A field without a dark edge has no boundary: the defaults would mark shadows as one.
+    if (boundary) {
+      target = disabled_class();
+      source = ProposalSource::Disabled;
     }
   }
   return out;
