@@ -7,6 +7,7 @@
 
 #include "elsed/elsed.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/stripes.hpp"
 
 namespace fieldlines {
 
@@ -16,6 +17,8 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   cv::Mat eight, bgr8;  // the input normalised to 8-bit BGR, reused between calls
   std::optional<Rgb> field;  // of the last frame, when measured
   FieldBoundary boundary;
+  FieldFeatures features;
+  StripeWorkspace stripes;
 };
 
 LineDetector::LineDetector(DetectorParams params, Thresholds thresholds)
@@ -60,21 +63,24 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   out.clear();
   impl_->field.reset();
   impl_->boundary.clear();
+  impl_->features.clear();
   const cv::Mat* bgr = normalise(image);
   if (!bgr) return;
   impl_->engine.run(*bgr, params_, out);
   const bool boundary = find_boundary_ || thresholds_.field_boundary_gate;
-  if (thresholds_.light.enabled || boundary) impl_->field = estimate_field_colour(*bgr);
+  if (thresholds_.light.enabled || boundary || params_.stripes) impl_->field = estimate_field_colour(*bgr);
   if (thresholds_.light.enabled && impl_->field)
     apply_light_gain(out, light_gain(thresholds_.light.reference_field, *impl_->field));
   classify_all(out, thresholds_);
   if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, impl_->boundary);
   if (thresholds_.field_boundary_gate)
     for (Segment& s : out) s.label = gate_by_field_boundary(s, impl_->boundary);
+  if (params_.stripes) find_stripes(*bgr, impl_->field, out, params_, impl_->stripes, impl_->features.markings);
 }
 
 const FieldBoundary& LineDetector::field_boundary() const { return impl_->boundary; }
 const std::optional<Rgb>& LineDetector::field_colour() const { return impl_->field; }
+const FieldFeatures& LineDetector::features() const { return impl_->features; }
 
 LineDetector::GradientViews LineDetector::compute_gradients(const cv::Mat& image) {
   const cv::Mat* bgr = normalise(image);

@@ -15,6 +15,7 @@
 #include "fieldlines/detect/classifier.hpp"
 #include "fieldlines/detect/detector_params.hpp"
 #include "fieldlines/detect/field_boundary.hpp"
+#include "fieldlines/detect/field_features.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
@@ -50,9 +51,12 @@ class LineDetector {
   // when the thresholds keep markings below it; empty otherwise, or when the frame has no field.
   void set_find_field_boundary(bool on) { find_boundary_ = on; }
   const FieldBoundary& field_boundary() const;
-  // The field colour of the last detect() (light.hpp), measured once when the light adaptation
-  // or the field boundary needed it; empty otherwise, or when the frame shows no field.
+  // The field colour of the last detect() (light.hpp), measured once when the light adaptation,
+  // the field boundary or the stripes needed it; empty otherwise, or when the frame shows no field.
   const std::optional<Rgb>& field_colour() const;
+  // The field features of the last detect() (field_features.hpp): the stripes' centre lines
+  // when DetectorParams::stripes is on (stripes.hpp); empty otherwise.
+  const FieldFeatures& features() const;
 
  private:
   struct Impl;

@@ -31,6 +31,13 @@ struct DetectorParams {
   // keep one). Speed only: the results are the same bits for any count, so it is not written
   // into thresholds or project files. Workers start on the first detect.
   int threads = 1;
+  // Painted lines as stripes (stripes.hpp): Marking segments that are not part of a stripe
+  // become None, and the stripes' centre lines are LineDetector::features().markings. Off by
+  // default: the reference reproduction has no such stage.
+  bool stripes = false;
+  int stripe_samples = 5;
+  double stripe_max_width = 0.15;
+  bool stripe_require_twin = false;
   bool operator==(const DetectorParams&) const = default;
 };
 
@@ -56,7 +63,7 @@ struct ParamSpec {
   bool in_files = true;     // written into and read from thresholds and project files
 };
 
-inline constexpr std::array<ParamSpec, 13> kDetectorParamSpecs{{
+inline constexpr std::array<ParamSpec, 17> kDetectorParamSpecs{{
     {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
      .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
     {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
@@ -84,6 +91,15 @@ inline constexpr std::array<ParamSpec, 13> kDetectorParamSpecs{{
      .help = "jump lengths tried at a junction"},
     {.name = "threads", .member = &DetectorParams::threads, .range = {1, 64},
      .help = "threads of the gradient pass (speed only)", .in_files = false},
+    {.name = "stripes", .member = &DetectorParams::stripes,
+     .help = "keep only markings that are stripes (turf, paint, turf) and measure their centre lines"},
+    {.name = "stripe_samples", .member = &DetectorParams::stripe_samples, .range = {1, 32},
+     .help = "profiles across each marking candidate", .slider = {1, 15}},
+    {.name = "stripe_max_width", .member = &DetectorParams::stripe_max_width, .range = {0, 1, true},
+     .help = "widest stripe on the bottom row, as a share of the image height (a quarter of it on top)",
+     .slider = {0.02, 0.5}},
+    {.name = "stripe_require_twin", .member = &DetectorParams::stripe_require_twin,
+     .help = "a stripe must have both edges detected; otherwise one edge with its profile suffices"},
 }};
 
 // The spec named `name`, or nullptr.

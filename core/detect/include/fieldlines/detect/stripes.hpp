@@ -1,0 +1,58 @@
+#pragma once
+// Painted lines as stripes. A colour transition at one edge cannot tell a painted line from a
+// wall's foot, a goal post or a robot's white bar; geometry can: a painted line is a stripe,
+// turf, then paint for a plausible width, then turf again.
+//
+// Each segment labelled Marking is checked by profiles across it at `stripe_samples` points
+// along its length, read in the 8-bit BGR frame from a few pixels outside its edge into its
+// bright side (the side its colour gradient points to): turf (the frame's field colour,
+// features/field_pixel.hpp) must lie just outside the edge, the profile must rise to paint
+// brighter than the turf, and turf must return within the largest plausible width. The width
+// is the distance between the two half-way crossings of brightness (paint to turf), so it
+// does not depend on where in the edge's blur the segment was fitted. The largest plausible
+// width grows linearly towards the image bottom, where the field is nearest to the camera:
+// `stripe_max_width` times the image height on the bottom row, a quarter of that on the top
+// rows. A segment is a stripe when at least half of its profiles are.
+//
+// A stripe edge whose opposite-sign twin is a stripe too (parallel within 5 degrees,
+// overlapping along its length, at about the measured width on its paint side) is merged with
+// it into one Marking: the centre line of the pair over the union of their lengths, and the
+// mean measured width. A stripe without a twin (its second edge was not detected: too short,
+// broken by a robot, below the detector's minimum length) is still a marking, its centre line
+// being the edge shifted by the measured centre offset, unless `stripe_require_twin` is set.
+// Every other Marking segment, and every one when the frame shows no field, becomes None, so
+// every consumer of labels sees the check. Buffers are the caller's: no allocation once warm.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <opencv2/core/mat.hpp>
+
+#include "fieldlines/detect/detector_params.hpp"
+#include "fieldlines/detect/field_features.hpp"
+#include "fieldlines/detect/segment.hpp"
+
+namespace fieldlines {
+
+// Scratch reused between frames; its contents mean nothing to a caller.
+struct StripeWorkspace {
+  struct Candidate {
+    std::size_t segment = 0;     // index into the segments
+    float ux = 0, uy = 0;        // unit direction, x0,y0 -> x1,y1
+    float sx = 0, sy = 0;        // unit normal towards the paint
+    float offset = 0, width = 0; // median centre offset along (sx, sy) and median width, px
+    bool paired = false;
+  };
+  std::vector<Candidate> candidates;
+  std::vector<float> brightness;       // one profile: R + G + B per step
+  std::vector<std::uint8_t> is_field;  // one profile: turf or not per step
+};
+
+// `bgr8`: the frame the segments were detected in (8-bit BGR; anything else keeps no marking).
+// `field`: the frame's field colour (LineDetector measures it); empty: no turf anywhere.
+// Relabels `segments` in place and writes one Marking per stripe into `out` (cleared first).
+void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<Segment> segments,
+                  const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out);
+
+}  // namespace fieldlines
