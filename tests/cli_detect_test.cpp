@@ -112,6 +112,42 @@ TEST_F(CliDetect, JsonHasTheSchemaAndTheLibrarysExactSegments) {
   EXPECT_NE(r.out.find("field.png: " + std::to_string(expected.size()) + " segments"), std::string::npos) << r.out;
 }
 
+// --stripes turns the stripes stage on (the library's markings, in soccer_vision_2d_msgs' names);
+// without it, or with --no-stripes over a thresholds file that turns it on, "markings" is empty.
+TEST_F(CliDetect, StripesWriteTheLibrarysMarkings) {
+  const cv::Mat img = synthetic_field(640, 480);
+  const fs::path path = write_image("field.png", img);
+  const fs::path on = dir_ / "on.json", off = dir_ / "off.json", forced_off = dir_ / "forced_off.json";
+  ASSERT_EQ(run({"detect", "--quiet", "--stripes", "--json", on.string(), path.string()}).exit_code, 0);
+  ASSERT_EQ(run({"detect", "--quiet", "--json", off.string(), path.string()}).exit_code, 0);
+  fieldlines::DetectorParams params;
+  params.stripes = true;
+  fieldlines::LineDetector detector(params);
+  const auto segments = detector.detect(img);
+  const auto& expected = detector.features().markings;
+  ASSERT_FALSE(expected.empty());
+  const json markings = read_json(on)["images"][0].at("markings");
+  ASSERT_EQ(markings.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(markings[i].size(), 5u);
+    EXPECT_FLOAT_EQ(markings[i].at("x0").get<float>(), expected[i].x0);
+    EXPECT_FLOAT_EQ(markings[i].at("y0").get<float>(), expected[i].y0);
+    EXPECT_FLOAT_EQ(markings[i].at("x1").get<float>(), expected[i].x1);
+    EXPECT_FLOAT_EQ(markings[i].at("y1").get<float>(), expected[i].y1);
+    EXPECT_FLOAT_EQ(markings[i].at("width").get<float>(), expected[i].width);
+  }
+  EXPECT_TRUE(read_json(off)["images"][0].at("markings").empty());
+
+  fieldlines::ThresholdsFile file;
+  file.detector.stripes = true;
+  const fs::path thresholds = dir_ / "stripes.json";
+  fieldlines::save_thresholds_file(thresholds, file);
+  ASSERT_EQ(run({"detect", "--quiet", "--thresholds", thresholds.string(), "--no-stripes", "--json", forced_off.string(),
+                 path.string()}).exit_code, 0);
+  EXPECT_TRUE(read_json(forced_off)["images"][0].at("markings").empty());
+  EXPECT_EQ(run({"detect", "--stripes", "--no-stripes", path.string()}).exit_code, 2);
+}
+
 TEST_F(CliDetect, FoldersAreSortedAndThreadsKeepTheInputOrder) {
   std::vector<std::string> names;
   for (int i = 0; i < 7; ++i) {

@@ -47,6 +47,10 @@ options:
   --draw DIR        write an overlay per image to DIR/<name>.png
                     (the studio's palette: marking magenta, boundary blue, none yellow,
                     each over a dark outline; legend top-left)
+  --stripes         keep only markings that are painted stripes (turf, paint, turf) and write
+                    their centre lines and widths ("markings" in --json); the thresholds file's
+                    "stripes" parameter otherwise (default off: the reference's behaviour)
+  --no-stripes      the stage off, whatever the thresholds file says
   --threads N       images processed in parallel, one detector per thread (default 1);
                     outputs keep the input order
   --quiet           no per-image lines on stdout, no progress on stderr
@@ -79,6 +83,7 @@ struct Options {
   std::optional<fs::path> thresholds, json, csv, draw;  // json and csv checked as output paths
   int threads = 1;
   bool quiet = false;
+  std::optional<bool> stripes;  // overrides the thresholds file's
   std::vector<std::string> paths;
   std::optional<std::string> video;
   std::optional<fs::path> video_out;
@@ -94,6 +99,9 @@ Options parse(const ParsedArgs& a) {
   if (const auto v = a.value("--draw")) o.draw = *v;
   o.threads = a.int_or("--threads", 1, 1, 256);
   o.quiet = a.flag("--quiet");
+  if (a.flag("--stripes") && a.flag("--no-stripes")) throw Error("--stripes and --no-stripes exclude each other");
+  if (a.flag("--stripes")) o.stripes = true;
+  if (a.flag("--no-stripes")) o.stripes = false;
   o.paths = a.positionals();
   o.video = a.value("--video");
   o.video_out = output_path(a, "--video-out");
@@ -150,7 +158,7 @@ std::string summary_line(const ImageDetections& d) {
 int cmd_detect(const Args& args) {
   const auto parsed = parse_or_print_help(
       args, {"--thresholds", "--json", "--csv", "--draw", "--threads", "--video", "--video-out", "--max-frames"},
-      {"--quiet"}, help_text());
+      {"--quiet", "--stripes", "--no-stripes"}, help_text());
   if (!parsed) return 0;
   const Options opt = parse(*parsed);
   if (opt.video) {
@@ -158,6 +166,7 @@ int cmd_detect(const Args& args) {
       throw Error("--video takes no PATH, --json, --csv or --draw (use --video-out for overlays)");
     ThresholdsFile video_config;
     if (opt.thresholds) video_config = load_thresholds_file(*opt.thresholds);
+    if (opt.stripes) video_config.detector.stripes = *opt.stripes;
     return run_video_detection({*opt.video, opt.video_out, opt.max_frames, opt.quiet}, video_config);
   }
   if (opt.video_out || opt.max_frames >= 0) throw Error("--video-out and --max-frames go with --video");
@@ -171,6 +180,7 @@ int cmd_detect(const Args& args) {
 
   ThresholdsFile config;  // defaults: the reference's parameters and thresholds
   if (opt.thresholds) config = load_thresholds_file(*opt.thresholds);
+  if (opt.stripes) config.detector.stripes = *opt.stripes;
   ImageInputs inputs = expand_image_inputs(opt.paths);
   const std::vector<fs::path>& images = inputs.images;
   const auto overlays = opt.draw ? overlay_paths(images, *opt.draw) : std::vector<fs::path>{};
@@ -201,6 +211,7 @@ int cmd_detect(const Args& args) {
       detector.detect(image, d.segments);
       d.detect_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       d.field_boundary = detector.field_boundary().points;
+      d.markings = detector.features().markings;
       if (opt.draw) {
         std::vector<unsigned char> png;
         cv::Mat overlay = draw_overlay(image, d.segments);

@@ -37,13 +37,19 @@ nlohmann::ordered_json to_json(const ImageDetections& image) {
   nlohmann::ordered_json boundary = nlohmann::ordered_json::array();
   for (const FieldBoundary::Point& p : image.field_boundary)
     boundary.push_back(nlohmann::ordered_json::array({finite_or_zero(p.x), finite_or_zero(p.y)}));
+  // Keys as soccer_vision_2d_msgs' MarkingSegment names them; other tools read them.
+  nlohmann::ordered_json markings = nlohmann::ordered_json::array();
+  for (const Marking& m : image.markings)
+    markings.push_back({{"x0", finite_or_zero(m.x0)}, {"y0", finite_or_zero(m.y0)}, {"x1", finite_or_zero(m.x1)},
+                        {"y1", finite_or_zero(m.y1)}, {"width", finite_or_zero(m.width)}});
   return {{"image", image.path.filename().string()},
           {"path", image.path.string()},
           {"width", image.width},
           {"height", image.height},
           {"detect_ms", image.detect_ms},
           {"segments", std::move(segments)},
-          {"field_boundary", std::move(boundary)}};
+          {"field_boundary", std::move(boundary)},
+          {"markings", std::move(markings)}};
 }
 
 nlohmann::ordered_json detections_json(std::span<const ImageDetections> images, std::span<const FailedImage> failed) {
