@@ -11,8 +11,9 @@ namespace {
 
 using Candidate = StripeWorkspace::Candidate;
 
-constexpr int kOuterPx = 4;              // turf is sought this far outside the edge
-constexpr int kBlurPx = 3;               // a half-way crossing may lie this far from the turf beyond it
+constexpr int kOuterPx = 2;      // the profile starts this far outside the edge, beyond its blur
+constexpr int kMaxBlurPx = 10;   // paint fades into turf over at most this many pixels (motion blur)...
+constexpr float kBlurShade = 0.85f;  // ...none of them darker than this share of the field colour
 constexpr float kPaintContrast = 1.15f;  // the paint's peak R + G + B over the field colour's
 constexpr float kMinWidthPx = 0.5f;
 constexpr float kTopWidthShare = 0.25f;  // the widest stripe on the top row, as a share of the bottom's
@@ -33,15 +34,17 @@ float crossing(const std::vector<float>& b, int i, float level) {
 }
 
 // One profile from (px, py) along the unit vector (sx, sy) towards the paint. Step i reads the
-// pixel nearest to (px, py) + (i - kOuterPx) (sx, sy); the profile ends at the image border.
+// pixel nearest to (px, py) + (i - back) (sx, sy), back = kOuterPx + kMaxBlurPx; the profile
+// ends at the image border.
 std::optional<Profile> measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, float py, float sx,
                                        float sy, float max_width, StripeWorkspace& work) {
-  const int steps = kOuterPx + static_cast<int>(std::ceil(max_width)) + kBlurPx + 2;
+  constexpr int back = kOuterPx + kMaxBlurPx;
+  const int steps = back + static_cast<int>(std::ceil(max_width)) + kMaxBlurPx + 2;
   work.brightness.resize(static_cast<std::size_t>(steps));
   work.is_field.resize(static_cast<std::size_t>(steps));
   int valid = 0;
   for (; valid < steps; ++valid) {
-    const float t = float(valid - kOuterPx);
+    const float t = float(valid - back);
     const long x = std::lround(px + t * sx), y = std::lround(py + t * sy);
     if (x < 0 || y < 0 || x >= bgr.cols || y >= bgr.rows) break;
     const std::uint8_t* p = bgr.ptr<std::uint8_t>(static_cast<int>(y)) + 3 * x;
@@ -52,11 +55,11 @@ std::optional<Profile> measure_profile(const cv::Mat& bgr, const FieldPixel& pix
   const std::vector<std::uint8_t>& turf = work.is_field;
   // Turf returns on the paint side: the first field pixel past the edge. Without it the bright
   // side is a wall, a board or a post, not paint.
-  int far_turf = kOuterPx + 1;
+  int far_turf = back + 1;
   while (far_turf < valid && !turf[far_turf]) ++far_turf;
   if (far_turf >= valid) return std::nullopt;
   // The paint's peak lies between the edge (give or take its blur) and that turf.
-  int peak = kOuterPx - 2;
+  int peak = back - kOuterPx;
   for (int i = peak + 1; i < far_turf; ++i)
     if (b[i] > b[peak]) peak = i;
   if (turf[peak] || b[peak] < kPaintContrast * pixel.field_sum()) return std::nullopt;
@@ -69,13 +72,19 @@ std::optional<Profile> measure_profile(const cv::Mat& bgr, const FieldPixel& pix
   while (lo > near_turf && b[lo - 1] >= level) --lo;
   while (hi < far_turf && b[hi + 1] >= level) ++hi;
   if (lo == near_turf || hi == far_turf) return std::nullopt;  // turf as bright as the paint
+  // Between paint and turf only blur: a short fade, never darker than turf. A robot's black
+  // body beside its white bar, or a dark gap before the turf, says the bright part is no paint.
+  const auto fades = [&](int from, int to) {
+    if (to - from > kMaxBlurPx) return false;
+    for (int i = from; i < to; ++i)
+      if (b[i] < kBlurShade * pixel.field_sum()) return false;
+    return true;
+  };
+  if (!fades(near_turf + 1, lo) || !fades(hi + 1, far_turf)) return std::nullopt;
   const float near_edge = crossing(b, lo - 1, level), far_edge = crossing(b, hi, level);
-  // Anything but blur between paint and turf (a robot's black body beside its white bar) says
-  // the bright part is not paint on turf.
-  if (near_edge - float(near_turf) > kBlurPx + 1 || float(far_turf) - far_edge > kBlurPx + 1) return std::nullopt;
   const float width = far_edge - near_edge;
   if (width < kMinWidthPx || width > max_width) return std::nullopt;
-  return Profile{width, 0.5f * (near_edge + far_edge) - float(kOuterPx)};
+  return Profile{width, 0.5f * (near_edge + far_edge) - float(back)};
 }
 
 float median(std::array<float, 32>& v, int n) {

@@ -6,8 +6,10 @@
 // Each segment labelled Marking is checked by profiles across it at `stripe_samples` points
 // along its length, read in the 8-bit BGR frame from a few pixels outside its edge into its
 // bright side (the side its colour gradient points to): turf (the frame's field colour,
-// features/field_pixel.hpp) must lie just outside the edge, the profile must rise to paint
-// brighter than the turf, and turf must return within the largest plausible width. The width
+// features/field_pixel.hpp) must lie outside the edge, the profile must rise to paint brighter
+// than the turf, and turf must return within the largest plausible width. Between paint and
+// turf on either side only a fade is allowed (at most 10 px, for motion blur, and never darker
+// than the turf): a robot's dark body beside its white bar is not turf. The width
 // is the distance between the two half-way crossings of brightness (paint to turf), so it
 // does not depend on where in the edge's blur the segment was fitted. The largest plausible
 // width grows linearly towards the image bottom, where the field is nearest to the camera:
