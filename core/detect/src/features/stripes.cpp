@@ -21,7 +21,12 @@ constexpr float kTwinCos = 0.9962f;      // cos(5 degrees): twins are this paral
 constexpr float kTwinWidthShare = 0.35f; // ...their distance within this share of the width...
 constexpr float kTwinMinSlackPx = 2;     // ...or this many pixels, whichever is more
 
+// A profile that leaves the image through its bottom or sides while still in paint is cut: it
+// says nothing either way (a line near the camera, running out of the frame). One leaving
+// through the top says no: above the field are walls, not paint.
+enum class Verdict { Stripe, No, Cut };
 struct Profile {
+  Verdict verdict = Verdict::No;
   float width = 0, offset = 0;
 };
 
@@ -36,17 +41,21 @@ float crossing(const std::vector<float>& b, int i, float level) {
 // One profile from (px, py) along the unit vector (sx, sy) towards the paint. Step i reads the
 // pixel nearest to (px, py) + (i - back) (sx, sy), back = kOuterPx + kMaxBlurPx; the profile
 // ends at the image border.
-std::optional<Profile> measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, float py, float sx,
+Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, float py, float sx,
                                        float sy, float max_width, StripeWorkspace& work) {
   constexpr int back = kOuterPx + kMaxBlurPx;
   const int steps = back + static_cast<int>(std::ceil(max_width)) + kMaxBlurPx + 2;
   work.brightness.resize(static_cast<std::size_t>(steps));
   work.is_field.resize(static_cast<std::size_t>(steps));
   int valid = 0;
+  bool cut = false;
   for (; valid < steps; ++valid) {
     const float t = float(valid - back);
     const long x = std::lround(px + t * sx), y = std::lround(py + t * sy);
-    if (x < 0 || y < 0 || x >= bgr.cols || y >= bgr.rows) break;
+    if (x < 0 || y < 0 || x >= bgr.cols || y >= bgr.rows) {
+      cut = y >= 0 && valid > back;
+      break;
+    }
     const std::uint8_t* p = bgr.ptr<std::uint8_t>(static_cast<int>(y)) + 3 * x;
     work.brightness[static_cast<std::size_t>(valid)] = brightness(p);
     work.is_field[static_cast<std::size_t>(valid)] = pixel.field(p);
@@ -57,21 +66,21 @@ std::optional<Profile> measure_profile(const cv::Mat& bgr, const FieldPixel& pix
   // side is a wall, a board or a post, not paint.
   int far_turf = back + 1;
   while (far_turf < valid && !turf[far_turf]) ++far_turf;
-  if (far_turf >= valid) return std::nullopt;
+  if (far_turf >= valid) return {cut ? Verdict::Cut : Verdict::No};
   // The paint's peak lies between the edge (give or take its blur) and that turf.
   int peak = back - kOuterPx;
   for (int i = peak + 1; i < far_turf; ++i)
     if (b[i] > b[peak]) peak = i;
-  if (turf[peak] || b[peak] < kPaintContrast * pixel.field_sum()) return std::nullopt;
+  if (turf[peak] || b[peak] < kPaintContrast * pixel.field_sum()) return {};
   int near_turf = peak - 1;
   while (near_turf >= 0 && !turf[near_turf]) --near_turf;
-  if (near_turf < 0) return std::nullopt;  // no turf outside the edge
+  if (near_turf < 0) return {};  // no turf outside the edge
   // Half-way between paint and the turf on either side, so blur widens nothing.
   const float level = 0.5f * (b[peak] + 0.5f * (b[near_turf] + b[far_turf]));
   int lo = peak, hi = peak;
   while (lo > near_turf && b[lo - 1] >= level) --lo;
   while (hi < far_turf && b[hi + 1] >= level) ++hi;
-  if (lo == near_turf || hi == far_turf) return std::nullopt;  // turf as bright as the paint
+  if (lo == near_turf || hi == far_turf) return {};  // turf as bright as the paint
   // Between paint and turf only blur: a short fade, never darker than turf. A robot's black
   // body beside its white bar, or a dark gap before the turf, says the bright part is no paint.
   const auto fades = [&](int from, int to) {
@@ -80,11 +89,11 @@ std::optional<Profile> measure_profile(const cv::Mat& bgr, const FieldPixel& pix
       if (b[i] < kBlurShade * pixel.field_sum()) return false;
     return true;
   };
-  if (!fades(near_turf + 1, lo) || !fades(hi + 1, far_turf)) return std::nullopt;
+  if (!fades(near_turf + 1, lo) || !fades(hi + 1, far_turf)) return {};
   const float near_edge = crossing(b, lo - 1, level), far_edge = crossing(b, hi, level);
   const float width = far_edge - near_edge;
-  if (width < kMinWidthPx || width > max_width) return std::nullopt;
-  return Profile{width, 0.5f * (near_edge + far_edge) - float(back)};
+  if (width < kMinWidthPx || width > max_width) return {};
+  return {Verdict::Stripe, width, 0.5f * (near_edge + far_edge) - float(back)};
 }
 
 float median(std::array<float, 32>& v, int n) {
@@ -116,18 +125,20 @@ bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segmen
   const int samples = std::clamp(params.stripe_samples, 1, 32);
   const float bottom_width = static_cast<float>(params.stripe_max_width) * float(bgr.rows);
   std::array<float, 32> widths{}, offsets{};
-  int stripes = 0;
+  int stripes = 0, decided = 0;
   for (int k = 0; k < samples; ++k) {
     const float f = (float(k) + 0.5f) / float(samples);
     const float px = s.x0 + f * dx, py = s.y0 + f * dy;
     const float max_width = bottom_width * std::max(kTopWidthShare, py / float(bgr.rows));
-    if (const auto p = measure_profile(bgr, pixel, px, py, nx, ny, max_width, work)) {
-      widths[static_cast<std::size_t>(stripes)] = p->width;
-      offsets[static_cast<std::size_t>(stripes)] = p->offset;
+    const Profile p = measure_profile(bgr, pixel, px, py, nx, ny, max_width, work);
+    decided += p.verdict != Verdict::Cut;
+    if (p.verdict == Verdict::Stripe) {
+      widths[static_cast<std::size_t>(stripes)] = p.width;
+      offsets[static_cast<std::size_t>(stripes)] = p.offset;
       ++stripes;
     }
   }
-  if (2 * stripes < samples || stripes == 0) return false;
+  if (2 * stripes < decided || stripes == 0) return false;
   c.width = median(widths, stripes);
   c.offset = median(offsets, stripes);
   return true;

@@ -22,8 +22,11 @@
 // mean measured width. A stripe without a twin (its second edge was not detected: too short,
 // broken by a robot, below the detector's minimum length) is still a marking, its centre line
 // being the edge shifted by the measured centre offset, unless `stripe_require_twin` is set.
-// Every other Marking segment, and every one when the frame shows no field, becomes None, so
-// every consumer of labels sees the check. Buffers are the caller's: no allocation once warm.
+// A profile that leaves the image through its bottom or sides while still in paint is cut and
+// counts neither way (a line near the camera running out of the frame; one leaving through the
+// top is no stripe: above the field are walls); a stripe needs one profile that is one, and at
+// least as many as those that are not. Every other Marking segment, and every one when the
+// frame shows no field, becomes None, so every consumer of labels sees the check. Buffers are the caller's: no allocation once warm.
 #include <cstdint>
 #include <optional>
 #include <span>
