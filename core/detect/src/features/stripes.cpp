@@ -14,7 +14,7 @@ using Candidate = StripeWorkspace::Candidate;
 constexpr int kOuterPx = 2;      // the profile starts this far outside the edge, beyond its blur
 constexpr int kMaxBlurPx = 10;   // paint fades into turf over at most this many pixels (motion blur)...
 constexpr float kBlurShade = 0.85f;  // ...none of them darker than this share of the field colour
-constexpr float kPaintContrast = 1.15f;  // the paint's peak R + G + B over the field colour's
+constexpr float kPaintContrast = 1.1f;   // the paint's peak R + G + B over the field colour's
 constexpr float kMinWidthPx = 0.5f;
 constexpr float kTopWidthShare = 0.25f;  // the widest stripe on the top row, as a share of the bottom's
 constexpr float kTwinCos = 0.9962f;      // cos(5 degrees): twins are this parallel...
@@ -32,6 +32,14 @@ struct Profile {
 
 float brightness(const std::uint8_t* p) { return float(p[0]) + p[1] + p[2]; }
 
+// Whether two pixels show the same turf: chromaticity within the field pixel rule's tolerance,
+// brightness within a fifth.
+bool same_turf(const std::uint8_t* a, const std::uint8_t* b) {
+  const float sa = std::max(brightness(a), 1.f), sb = std::max(brightness(b), 1.f);
+  if (sb < 0.8f * sa || sb > 1.2f * sa) return false;
+  return std::abs(a[2] / sa - b[2] / sb) + std::abs(a[1] / sa - b[1] / sb) <= FieldBoundaryParams{}.chroma_tolerance;
+}
+
 // Where between steps i and i + 1 the brightness crosses `level`, in steps.
 float crossing(const std::vector<float>& b, int i, float level) {
   const float d = b[i + 1] - b[i];
@@ -47,6 +55,7 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
   const int steps = back + static_cast<int>(std::ceil(max_width)) + kMaxBlurPx + 2;
   work.brightness.resize(static_cast<std::size_t>(steps));
   work.is_field.resize(static_cast<std::size_t>(steps));
+  work.pixels.resize(static_cast<std::size_t>(steps));
   int valid = 0;
   bool cut = false;
   for (; valid < steps; ++valid) {
@@ -59,28 +68,40 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
     const std::uint8_t* p = bgr.ptr<std::uint8_t>(static_cast<int>(y)) + 3 * x;
     work.brightness[static_cast<std::size_t>(valid)] = brightness(p);
     work.is_field[static_cast<std::size_t>(valid)] = pixel.field(p);
+    work.pixels[static_cast<std::size_t>(valid)] = p;
   }
   const std::vector<float>& b = work.brightness;
   const std::vector<std::uint8_t>& turf = work.is_field;
-  // Turf returns on the paint side: the first field pixel past the edge. Without it the bright
-  // side is a wall, a board or a post, not paint.
-  int far_turf = back + 1;
-  while (far_turf < valid && !turf[far_turf]) ++far_turf;
-  if (far_turf >= valid) return {cut ? Verdict::Cut : Verdict::No};
-  // The paint's peak lies between the edge (give or take its blur) and that turf.
-  int peak = back - kOuterPx;
-  for (int i = peak + 1; i < far_turf; ++i)
-    if (b[i] > b[peak]) peak = i;
+  // Turf outside the edge, in the frame's field colour.
+  int outside = std::min(back, valid - 1);
+  while (outside >= 0 && !turf[outside]) --outside;
+  if (outside < 0) return {};
+  // Turf returns on the paint side: the first pixel past the edge in the field colour or in the
+  // colour of the turf outside (far turf in haze or in another light misses the frame's
+  // colour), and darker than half-way to the paint (blurred paint can pass the colour test).
+  // Without it the bright side is a wall, a board or a post, not paint. The paint's peak lies
+  // between the edge (give or take its blur) and that turf.
+  const std::uint8_t* const outside_pixel = work.pixels[static_cast<std::size_t>(outside)];
+  int far_turf = back, peak = std::max(back - kOuterPx, outside + 1);
+  float level = 0;
+  for (;;) {
+    do ++far_turf;
+    while (far_turf < valid && !turf[far_turf] && !same_turf(outside_pixel, work.pixels[far_turf]));
+    if (far_turf >= valid) return {cut ? Verdict::Cut : Verdict::No};
+    for (int i = peak + 1; i <= far_turf; ++i)
+      if (b[i] > b[peak]) peak = i;
+    if (peak == far_turf) continue;  // brighter than all before it: faint paint, not turf
+    // Half-way between the paint and the turf on either side, so blur widens nothing.
+    level = 0.5f * (b[peak] + 0.5f * (b[outside] + b[far_turf]));
+    if (b[far_turf] < level) break;
+  }
   if (turf[peak] || b[peak] < kPaintContrast * pixel.field_sum()) return {};
   int near_turf = peak - 1;
-  while (near_turf >= 0 && !turf[near_turf]) --near_turf;
-  if (near_turf < 0) return {};  // no turf outside the edge
-  // Half-way between paint and the turf on either side, so blur widens nothing.
-  const float level = 0.5f * (b[peak] + 0.5f * (b[near_turf] + b[far_turf]));
+  while (near_turf >= 0 && !(turf[near_turf] && b[near_turf] < level)) --near_turf;
+  if (near_turf < 0) return {};
   int lo = peak, hi = peak;
-  while (lo > near_turf && b[lo - 1] >= level) --lo;
-  while (hi < far_turf && b[hi + 1] >= level) ++hi;
-  if (lo == near_turf || hi == far_turf) return {};  // turf as bright as the paint
+  while (b[lo - 1] >= level) --lo;  // stops after near_turf, stays below it
+  while (b[hi + 1] >= level) ++hi;  // stops before far_turf, stays above it
   // Between paint and turf only blur: a short fade, never darker than turf. A robot's black
   // body beside its white bar, or a dark gap before the turf, says the bright part is no paint.
   const auto fades = [&](int from, int to) {

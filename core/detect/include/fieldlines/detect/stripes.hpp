@@ -51,7 +51,8 @@ struct StripeWorkspace {
   };
   std::vector<Candidate> candidates;
   std::vector<float> brightness;       // one profile: R + G + B per step
-  std::vector<std::uint8_t> is_field;  // one profile: turf or not per step
+  std::vector<std::uint8_t> is_field;  // one profile: field colour or not per step
+  std::vector<const std::uint8_t*> pixels;  // one profile: the pixel of each step
 };
 
 // `bgr8`: the frame the segments were detected in (8-bit BGR; anything else keeps no marking).
