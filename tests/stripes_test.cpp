@@ -140,7 +140,8 @@ TEST(Stripes, ALineWithOneEdgeDetectedIsStillMeasured) {
   EXPECT_FLOAT_EQ(out[0].x0, 100);
 
   // Both edges: one marking over the union of their lengths.
-  std::vector<Segment> two{one[0], {.x0 = 80, .y0 = kTop - 0.5f, .x1 = 450, .y1 = kTop - 0.5f, .label = Label::Marking}};
+  const Segment top{.x0 = 80, .y0 = kTop - 0.5f, .x1 = 450, .y1 = kTop - 0.5f, .label = Label::Marking};
+  std::vector<Segment> two{one[0], top};
   find_stripes(frame, field, two, stripes_on(), work, out);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(count(two, Label::Marking), 2);

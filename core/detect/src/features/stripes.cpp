@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "features/field_pixel.hpp"
+#include "field_pixel.hpp"
 
 namespace fieldlines {
 namespace {
@@ -12,8 +12,8 @@ namespace {
 using Candidate = StripeWorkspace::Candidate;
 
 constexpr int kOuterPx = 2;      // the profile starts this far outside the edge, beyond its blur
-constexpr int kMaxBlurPx = 10;   // paint fades into turf over at most this many pixels (motion blur)...
-constexpr float kBlurShade = 0.85f;  // ...none of them darker than this share of the field colour
+constexpr int kMaxBlurPx = 10;   // paint fades into turf over at most this many px (motion blur)...
+constexpr float kBlurShade = 0.85f;  // ...none darker than this share of the field colour
 constexpr float kPaintContrast = 1.1f;   // the paint's peak R + G + B over the field colour's
 constexpr float kMinWidthPx = 0.5f;
 constexpr float kTopWidthShare = 0.25f;  // the widest stripe on the top row, as a share of the bottom's
@@ -49,8 +49,8 @@ float crossing(const std::vector<float>& b, int i, float level) {
 // One profile from (px, py) along the unit vector (sx, sy) towards the paint. Step i reads the
 // pixel nearest to (px, py) + (i - back) (sx, sy), back = kOuterPx + kMaxBlurPx; the profile
 // ends at the image border.
-Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, float py, float sx,
-                                       float sy, float max_width, StripeWorkspace& work) {
+Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, float py, float sx, float sy,
+                        float max_width, StripeWorkspace& work) {
   constexpr int back = kOuterPx + kMaxBlurPx;
   const int steps = back + static_cast<int>(std::ceil(max_width)) + kMaxBlurPx + 2;
   work.brightness.resize(static_cast<std::size_t>(steps));
