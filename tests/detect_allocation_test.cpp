@@ -224,6 +224,14 @@ TEST(DetectAllocations, NoneWithLightAdaptation) {
   expect_warm_detect_allocates_nothing(frames, names, {}, t);
 }
 
+// Every field feature stage on: the stripes, their intersections.
+DetectorParams all_features() {
+  DetectorParams p;
+  p.stripes = true;
+  p.intersections = true;
+  return p;
+}
+
 // The stripes stage (stripes.hpp) measures its profiles in the detector's workspace and writes
 // the markings into the detector's features: still nothing.
 TEST(DetectAllocations, NoneWithStripes) {
@@ -244,6 +252,7 @@ TEST(DetectAllocations, NoneWithStripes) {
   t.light = {true, {40, 120, 40}};
   t.field_boundary_gate = true;
   expect_warm_detect_allocates_nothing(frames, names, stripes, t);
+  expect_warm_detect_allocates_nothing(frames, names, all_features(), t);
 }
 
 // With threads > 1 the workers start on the first detect and are woken per frame without a heap
@@ -285,6 +294,7 @@ TEST(DetectAllocations, NoneWhenSizesAlternateAfterTheLargest) {
   DetectorParams stripes;  // profiles as long as the tallest frame allows
   stripes.stripes = true;
   expect_none_when_sizes_alternate(stripes);
+  expect_none_when_sizes_alternate(all_features());
 }
 
 std::vector<fs::path> images_in(const fs::path& dir) {
@@ -295,7 +305,7 @@ std::vector<fs::path> images_in(const fs::path& dir) {
 }
 
 void expect_none_on_folder(const fs::path& dir, std::size_t expected_frames, const DetectorParams& params = {}) {
-  SCOPED_TRACE(params.stripes ? "stripes on" : "stripes off");
+  SCOPED_TRACE(params.intersections ? "all features on" : (params.stripes ? "stripes on" : "stripes off"));
   std::vector<cv::Mat> frames;
   std::vector<std::string> names;
   for (const fs::path& p : images_in(dir)) {
@@ -317,6 +327,14 @@ TEST(DetectAllocations, NoneOnTheAuthorsSslFrames) {
   DetectorParams stripes;
   stripes.stripes = true;
   expect_none_on_folder(dir, 41, stripes);
+  LineDetector probe(all_features());
+  std::size_t found = 0;
+  for (const fs::path& p : images_in(dir)) {
+    probe.detect(cv::imread(p.string(), cv::IMREAD_COLOR));
+    found += probe.features().intersections.size();
+  }
+  ASSERT_GT(found, 0u) << "the frames must exercise the intersections";
+  expect_none_on_folder(dir, 41, all_features());
 }
 
 TEST(DetectAllocations, NoneOnHumanoidFramesOfTwoSizes) {
@@ -325,6 +343,7 @@ TEST(DetectAllocations, NoneOnHumanoidFramesOfTwoSizes) {
   DetectorParams stripes;
   stripes.stripes = true;
   expect_none_on_folder(dir, 9, stripes);
+  expect_none_on_folder(dir, 9, all_features());
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "elsed/elsed.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/intersections.hpp"
 #include "fieldlines/detect/stripes.hpp"
 
 namespace fieldlines {
@@ -16,9 +17,9 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   ElsedEngine engine;
   cv::Mat eight, bgr8;  // the input normalised to 8-bit BGR, reused between calls
   std::optional<Rgb> field;  // of the last frame, when measured
-  FieldBoundary boundary;
-  FieldFeatures features;
+  FieldFeatures features;  // its field_boundary is the one the gate and field_boundary() use
   StripeWorkspace stripes;
+  IntersectionWorkspace intersections;
 };
 
 LineDetector::LineDetector(DetectorParams params, Thresholds thresholds)
@@ -62,23 +63,25 @@ const cv::Mat* LineDetector::normalise(const cv::Mat& image) {
 void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   out.clear();
   impl_->field.reset();
-  impl_->boundary.clear();
   impl_->features.clear();
   const cv::Mat* bgr = normalise(image);
   if (!bgr) return;
   impl_->engine.run(*bgr, params_, out);
   const bool boundary = find_boundary_ || thresholds_.field_boundary_gate;
-  if (thresholds_.light.enabled || boundary || params_.stripes) impl_->field = estimate_field_colour(*bgr);
+  const bool stripes = params_.stripes || params_.intersections;  // junctions are of stripes
+  if (thresholds_.light.enabled || boundary || stripes) impl_->field = estimate_field_colour(*bgr);
   if (thresholds_.light.enabled && impl_->field)
     apply_light_gain(out, light_gain(thresholds_.light.reference_field, *impl_->field));
   classify_all(out, thresholds_);
-  if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, impl_->boundary);
+  FieldFeatures& f = impl_->features;
+  if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary);
   if (thresholds_.field_boundary_gate)
-    for (Segment& s : out) s.label = gate_by_field_boundary(s, impl_->boundary);
-  if (params_.stripes) find_stripes(*bgr, impl_->field, out, params_, impl_->stripes, impl_->features.markings);
+    for (Segment& s : out) s.label = gate_by_field_boundary(s, f.field_boundary);
+  if (stripes) find_stripes(*bgr, impl_->field, out, params_, impl_->stripes, f.markings);
+  if (params_.intersections) find_intersections(f.markings, params_, impl_->intersections, f.intersections);
 }
 
-const FieldBoundary& LineDetector::field_boundary() const { return impl_->boundary; }
+const FieldBoundary& LineDetector::field_boundary() const { return impl_->features.field_boundary; }
 const std::optional<Rgb>& LineDetector::field_colour() const { return impl_->field; }
 const FieldFeatures& LineDetector::features() const { return impl_->features; }
 

@@ -55,7 +55,8 @@ class LineDetector {
   // the field boundary or the stripes needed it; empty otherwise, or when the frame shows no field.
   const std::optional<Rgb>& field_colour() const;
   // The field features of the last detect() (field_features.hpp): the stripes' centre lines
-  // when DetectorParams::stripes is on (stripes.hpp); empty otherwise.
+  // when DetectorParams::stripes is on (stripes.hpp), the junctions when intersections is on
+  // (intersections.hpp), the field boundary as field_boundary() has it; empty otherwise.
   const FieldFeatures& features() const;
 
  private:

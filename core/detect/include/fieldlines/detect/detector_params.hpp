@@ -38,6 +38,11 @@ struct DetectorParams {
   int stripe_samples = 5;
   double stripe_max_width = 0.15;
   bool stripe_require_twin = false;
+  // L, T and X junctions of the stripes' centre lines (intersections.hpp). Off by default like
+  // the stripes; on, it runs the stripes stage too (its input).
+  bool intersections = false;
+  double intersection_min_angle = 30;
+  double intersection_reach = 2;
   bool operator==(const DetectorParams&) const = default;
 };
 
@@ -63,7 +68,7 @@ struct ParamSpec {
   bool in_files = true;     // written into and read from thresholds and project files
 };
 
-inline constexpr std::array<ParamSpec, 17> kDetectorParamSpecs{{
+inline constexpr std::array<ParamSpec, 20> kDetectorParamSpecs{{
     {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
      .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
     {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
@@ -100,6 +105,12 @@ inline constexpr std::array<ParamSpec, 17> kDetectorParamSpecs{{
      .slider = {0.02, 0.5}},
     {.name = "stripe_require_twin", .member = &DetectorParams::stripe_require_twin,
      .help = "a stripe must have both edges detected; otherwise one edge with its profile suffices"},
+    {.name = "intersections", .member = &DetectorParams::intersections,
+     .help = "find L, T and X junctions of the stripes' centre lines (runs the stripes stage too)"},
+    {.name = "intersection_min_angle", .member = &DetectorParams::intersection_min_angle, .range = {0, 90, true},
+     .unit = "deg", .help = "two centre lines meet only at more than this angle", .slider = {5, 80}},
+    {.name = "intersection_reach", .member = &DetectorParams::intersection_reach, .range = {0, 20},
+     .help = "how far a line may end short of a crossing, in line widths (plus 4 px)", .slider = {0, 6}},
 }};
 
 // The spec named `name`, or nullptr.
