@@ -224,11 +224,12 @@ TEST(DetectAllocations, NoneWithLightAdaptation) {
   expect_warm_detect_allocates_nothing(frames, names, {}, t);
 }
 
-// Every field feature stage on: the stripes, their intersections.
+// Every field feature stage on: the stripes, their intersections, the centre circle.
 DetectorParams all_features() {
   DetectorParams p;
   p.stripes = true;
   p.intersections = true;
+  p.centre_circle = true;
   return p;
 }
 

@@ -7,6 +7,7 @@
 
 #include "elsed/elsed.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/centre_circle.hpp"
 #include "fieldlines/detect/intersections.hpp"
 #include "fieldlines/detect/stripes.hpp"
 
@@ -20,6 +21,10 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   FieldFeatures features;  // its field_boundary is the one the gate and field_boundary() use
   StripeWorkspace stripes;
   IntersectionWorkspace intersections;
+  std::vector<Segment> pieces;  // the centre circle's second drawing
+  StripeWorkspace piece_stripes;
+  std::vector<Marking> arcs;    // the pieces that are stripes
+  CircleWorkspace circle;
 };
 
 LineDetector::LineDetector(DetectorParams params, Thresholds thresholds)
@@ -68,10 +73,11 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   if (!bgr) return;
   impl_->engine.run(*bgr, params_, out);
   const bool boundary = find_boundary_ || thresholds_.field_boundary_gate;
-  const bool stripes = params_.stripes || params_.intersections;  // junctions are of stripes
+  // Junctions and the circle are made of stripes.
+  const bool stripes = params_.stripes || params_.intersections || params_.centre_circle;
   if (thresholds_.light.enabled || boundary || stripes) impl_->field = estimate_field_colour(*bgr);
-  if (thresholds_.light.enabled && impl_->field)
-    apply_light_gain(out, light_gain(thresholds_.light.reference_field, *impl_->field));
+  const bool gain = thresholds_.light.enabled && impl_->field;
+  if (gain) apply_light_gain(out, light_gain(thresholds_.light.reference_field, *impl_->field));
   classify_all(out, thresholds_);
   FieldFeatures& f = impl_->features;
   if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary);
@@ -79,6 +85,23 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
     for (Segment& s : out) s.label = gate_by_field_boundary(s, f.field_boundary);
   if (stripes) find_stripes(*bgr, impl_->field, out, params_, impl_->stripes, f.markings);
   if (params_.intersections) find_intersections(f.markings, params_, impl_->intersections, f.intersections);
+  if (params_.centre_circle) {
+    constexpr int kPieceScanInterval = 4;  // a short piece needs an anchor on it
+    std::vector<Segment>& pieces = impl_->pieces;
+    impl_->engine.redraw(*bgr, params_, kPieceScanInterval, params_.circle_piece_length, pieces);
+    if (gain) apply_light_gain(pieces, light_gain(thresholds_.light.reference_field, *impl_->field));
+    // The colour test without its length: shortness is what these pieces are for.
+    Thresholds short_pieces = thresholds_;
+    short_pieces.marking.thresholds.min_length = 0;
+    classify_all(pieces, short_pieces);
+    if (thresholds_.field_boundary_gate)
+      for (Segment& s : pieces) s.label = gate_by_field_boundary(s, f.field_boundary);
+    find_stripes(*bgr, impl_->field, pieces, params_, impl_->piece_stripes, impl_->arcs);
+    find_centre_circle(impl_->arcs, impl_->circle, f.ellipses);
+    // The circle's pieces are markings too (arcs); after the junctions, which are of lines.
+    for (std::size_t i = 0; i < impl_->arcs.size(); ++i)
+      if (impl_->circle.on_ellipse[i]) f.markings.push_back(impl_->arcs[i]);
+  }
 }
 
 const FieldBoundary& LineDetector::field_boundary() const { return impl_->features.field_boundary; }

@@ -43,6 +43,10 @@ struct DetectorParams {
   bool intersections = false;
   double intersection_min_angle = 30;
   double intersection_reach = 2;
+  // The centre circle from short stripe pieces (centre_circle.hpp); off by default, and on it
+  // draws the frame a second time.
+  bool centre_circle = false;
+  int circle_piece_length = 15;
   bool operator==(const DetectorParams&) const = default;
 };
 
@@ -68,7 +72,7 @@ struct ParamSpec {
   bool in_files = true;     // written into and read from thresholds and project files
 };
 
-inline constexpr std::array<ParamSpec, 20> kDetectorParamSpecs{{
+inline constexpr std::array<ParamSpec, 22> kDetectorParamSpecs{{
     {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
      .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
     {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
@@ -111,6 +115,10 @@ inline constexpr std::array<ParamSpec, 20> kDetectorParamSpecs{{
      .unit = "deg", .help = "two centre lines meet only at more than this angle", .slider = {5, 80}},
     {.name = "intersection_reach", .member = &DetectorParams::intersection_reach, .range = {0, 20},
      .help = "how far a line may end short of a crossing, in line widths (plus 4 px)", .slider = {0, 6}},
+    {.name = "centre_circle", .member = &DetectorParams::centre_circle,
+     .help = "fit the centre circle to short stripe pieces of a second drawing (runs the stripes stage too)"},
+    {.name = "circle_piece_length", .member = &DetectorParams::circle_piece_length, .range = {3, 10000},
+     .unit = "px", .help = "shortest piece of the second drawing", .slider = {5, 60}},
 }};
 
 // The spec named `name`, or nullptr.
