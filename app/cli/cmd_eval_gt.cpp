@@ -223,7 +223,10 @@ int cmd_eval_gt(const Args& args) {
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       const GtScore score = GtEdges(item.truth, match).score(segments);
       synth::FeatureScore feature_score;
-      if (features) feature_score = synth::score_features(synth::feature_truth(item.truth), detector.features());
+      if (features) {
+        const auto ft = synth::feature_truth(item.truth);
+        feature_score = synth::score_features(ft, detector.features());
+      }
       Group& g = groups[{item.row, item.condition}];
       g.score += score, g.features += feature_score, g.detect_ms += ms;
       total.score += score, total.features += feature_score, total.detect_ms += ms;

@@ -21,9 +21,10 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   FieldFeatures features;  // its field_boundary is the one the gate and field_boundary() use
   StripeWorkspace stripes;
   IntersectionWorkspace intersections;
-  std::vector<Segment> pieces;  // the centre circle's second drawing
+  std::vector<Segment> pieces;  // the second drawing (find_pieces)
   StripeWorkspace piece_stripes;
   std::vector<Marking> arcs;    // the pieces that are stripes
+  std::vector<Marking> lines;   // those of them not on the circle
   CircleWorkspace circle;
 };
 
@@ -84,24 +85,40 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   if (thresholds_.field_boundary_gate)
     for (Segment& s : out) s.label = gate_by_field_boundary(s, f.field_boundary);
   if (stripes) find_stripes(*bgr, impl_->field, out, params_, impl_->stripes, f.markings);
-  if (params_.intersections) find_intersections(f.markings, params_, impl_->intersections, f.intersections);
-  if (params_.centre_circle) {
-    constexpr int kPieceScanInterval = 4;  // a short piece needs an anchor on it
-    std::vector<Segment>& pieces = impl_->pieces;
-    impl_->engine.redraw(*bgr, params_, kPieceScanInterval, params_.circle_piece_length, pieces);
-    if (gain) apply_light_gain(pieces, light_gain(thresholds_.light.reference_field, *impl_->field));
-    // The colour test without its length: shortness is what these pieces are for.
-    Thresholds short_pieces = thresholds_;
-    short_pieces.marking.thresholds.min_length = 0;
-    classify_all(pieces, short_pieces);
-    if (thresholds_.field_boundary_gate)
-      for (Segment& s : pieces) s.label = gate_by_field_boundary(s, f.field_boundary);
-    find_stripes(*bgr, impl_->field, pieces, params_, impl_->piece_stripes, impl_->arcs);
-    find_centre_circle(impl_->arcs, impl_->circle, f.ellipses);
-    // The circle's pieces are markings too (arcs); after the junctions, which are of lines.
+  if (params_.intersections || params_.centre_circle) find_pieces(*bgr, gain);
+}
+
+// The junctions and the circle need pieces shorter than the detector's minimum length (a line
+// running into a crossing stops short of it; a curve has no long straight piece): the frame is
+// drawn a second time from the same gradients, and those pieces that are stripes are the input.
+void LineDetector::find_pieces(const cv::Mat& bgr, bool gain) {
+  constexpr int kPieceScanInterval = 4;  // a short piece needs an anchor on it
+  FieldFeatures& f = impl_->features;
+  std::vector<Segment>& pieces = impl_->pieces;
+  impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, pieces);
+  if (gain) apply_light_gain(pieces, light_gain(thresholds_.light.reference_field, *impl_->field));
+  // The colour test without its length: shortness is what these pieces are for. (Leaving the
+  // colour test to the stripes check alone finds a few more junctions at a fifth more false ones
+  // on synthetic fields.)
+  Thresholds short_pieces = thresholds_;
+  short_pieces.marking.thresholds.min_length = 0;
+  classify_all(pieces, short_pieces);
+  if (thresholds_.field_boundary_gate)
+    for (Segment& s : pieces) s.label = gate_by_field_boundary(s, f.field_boundary);
+  find_stripes(bgr, impl_->field, pieces, params_, impl_->piece_stripes, impl_->arcs);
+  std::vector<std::uint8_t>& on_ellipse = impl_->circle.on_ellipse;
+  if (params_.centre_circle) find_centre_circle(impl_->arcs, impl_->circle, f.ellipses);
+  else on_ellipse.assign(impl_->arcs.size(), 0);
+  if (params_.intersections) {
+    // The circle's chords bend into each other and cross the halfway line: no junctions.
+    impl_->lines.clear();
     for (std::size_t i = 0; i < impl_->arcs.size(); ++i)
-      if (impl_->circle.on_ellipse[i]) f.markings.push_back(impl_->arcs[i]);
+      if (!on_ellipse[i]) impl_->lines.push_back(impl_->arcs[i]);
+    find_intersections(impl_->lines, params_, impl_->intersections, f.intersections);
   }
+  // The circle's pieces are markings too (arcs).
+  for (std::size_t i = 0; i < impl_->arcs.size(); ++i)
+    if (on_ellipse[i]) f.markings.push_back(impl_->arcs[i]);
 }
 
 const FieldBoundary& LineDetector::field_boundary() const { return impl_->features.field_boundary; }

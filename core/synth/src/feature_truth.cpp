@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include <opencv2/imgproc.hpp>
 
@@ -99,10 +100,13 @@ FeatureTruth feature_truth(const GroundTruth& truth) {
   for (const WorldJunction& j : world_junctions(field)) {
     const auto centre = camera.project(Vector3d(j.at.x(), j.at.y(), 0));
     if (!centre || !inside(*centre, k)) continue;
-    float width = 0;
-    const double off = nearest_paint(truth, float(centre->x()), float(centre->y()), "", width);
-    if (off > std::max(3.f, width) || width < 1) continue;  // hidden, or too thin to see
     Intersection i{.x = float(centre->x()), .y = float(centre->y()), .confidence = 1};
+    float width = 0;
+    const double off = nearest_paint(truth, i.x, i.y, "", width);
+    if (off > std::max(3.f, width) || width < 1) {  // hidden, or too thin to see
+      out.ignored.push_back(i);
+      continue;
+    }
     for (const Vector2d& arm : j.arms) {
       // Walk along the arm on the ground until it is kArmPx from the centre in the frame.
       for (double s = 0.01; s < 3; s += 0.01) {
@@ -114,15 +118,37 @@ FeatureTruth feature_truth(const GroundTruth& truth) {
         }
       }
     }
-    if (i.num_rays < 2) continue;
     const auto dir = [&](int r) {
       const float h = i.heading_rays[static_cast<std::size_t>(r)];
       return Vector2d(std::cos(h), std::sin(h));
     };
-    if (i.num_rays == 2 && dir(0).dot(dir(1)) < kStraightCos) continue;
-    std::sort(i.heading_rays.begin(), i.heading_rays.begin() + i.num_rays);
+    if (i.num_rays < 2 || (i.num_rays == 2 && dir(0).dot(dir(1)) < kStraightCos)) {
+      out.ignored.push_back(i);  // cut by the frame's border: a line or less of it shows
+      continue;
+    }
+    // Insertion sort of at most four: std::sort over a prefix of the array trips GCC 12's
+    // -Warray-bounds.
+    auto& h = i.heading_rays;
+    for (std::size_t a = 1; a < static_cast<std::size_t>(i.num_rays); ++a)
+      for (std::size_t b = a; b > 0 && h[b - 1] > h[b]; --b) std::swap(h[b - 1], h[b]);
     i.type = i.num_rays == 2 ? JunctionType::L : (i.num_rays == 3 ? JunctionType::T : JunctionType::X);
     out.intersections.push_back(i);
+  }
+  // Where the centre circle crosses a straight line (the halfway line): not scored either way.
+  for (const PaintedLine& c : field.lines) {
+    if (!c.arc) continue;
+    for (const PaintedLine& l : field.lines) {
+      if (l.arc) continue;
+      const Vector2d d = (l.b - l.a).normalized(), w = l.a - c.centre;
+      const double b = w.dot(d), disc = b * b - (w.squaredNorm() - c.radius * c.radius);
+      if (disc < 0) continue;
+      for (const double t : {-b - std::sqrt(disc), -b + std::sqrt(disc)}) {
+        if (t < 0 || t > l.length()) continue;
+        const Vector2d g = l.a + t * d;
+        const auto p = camera.project(Vector3d(g.x(), g.y(), 0));
+        if (p && inside(*p, k)) out.ignored.push_back({.x = float(p->x()), .y = float(p->y())});
+      }
+    }
   }
 
   for (const PaintedLine& line : field.lines) {
@@ -174,6 +200,15 @@ FeatureScore score_features(const FeatureTruth& truth, const FieldFeatures& dete
     det_used[p.det] = tru_used[p.tru] = 1;
     ++s.matched;
     s.type_correct += detected.intersections[p.det].type == truth.intersections[p.tru].type;
+  }
+  for (std::size_t a = 0; a < detected.intersections.size(); ++a) {
+    if (det_used[a]) continue;
+    const Intersection& d = detected.intersections[a];
+    for (const Intersection& i : truth.ignored)
+      if (std::hypot(d.x - i.x, d.y - i.y) <= params.max_distance_px) {
+        --s.detected;  // neither right nor wrong
+        break;
+      }
   }
 
   s.ellipses = static_cast<long>(detected.ellipses.size());

@@ -16,9 +16,9 @@ constexpr float kMinBendCos = 0.99863f;   // cos(3 degrees): less is a straight 
 constexpr float kMaxBendCos = 0.76604f;   // cos(40 degrees): more is a corner
 constexpr float kLinkWidths = 2, kLinkPx = 6;
 constexpr int kMinChain = 3;
-constexpr int kSamplesPerPiece = 5;
+constexpr int kSamplesPerPiece = 3;
 constexpr int kCoverageBins = 36;
-constexpr float kMinCoverage = 60.f / 360;
+constexpr float kMinCoverage = 120.f / 360;  // less was a corner and a stray piece as often as a circle
 constexpr float kMinSemiAxisPx = 4;
 constexpr float kMaxAxisRatio = 12;  // a circle seen at 5 degrees above the turf
 
@@ -171,42 +171,55 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
   }
   for (std::size_t i = 0; i < n; ++i) ++work.chain_size[static_cast<std::size_t>(root(work.parent, static_cast<int>(i)))];
 
-  // The tolerance of a chain: a third of its median-ish (mean) line width, at least 1.5 px.
+  // The tolerance of a chain: half its mean line width, at least 1.5 px (a piece is a chord: its
+  // middle lies inside the curve).
   const auto tolerance_of = [&](int chain) {
     float sum = 0;
     int count = 0;
     for (std::size_t i = 0; i < n; ++i)
       if (root(work.parent, static_cast<int>(i)) == chain) sum += pieces[i].width, ++count;
-    return std::max(1.5f, sum / static_cast<float>(std::max(count, 1)) / 3);
+    return std::max(1.5f, sum / static_cast<float>(std::max(count, 1)) / 2);
   };
-  int best_chain = -1;
+  // The seed: one chain of at least kMinChain pieces, or two chains of at least two each (a flat
+  // ellipse's far and near arcs, which do not chain round its sharply bending ends).
+  const auto add_chain = [&](int chain) {
+    for (std::size_t i = 0; i < n; ++i)
+      if (root(work.parent, static_cast<int>(i)) == chain) add_samples(pieces[i], work.points);
+  };
+  int best_chain = -1, best_partner = -1;
   float best_share = 0;
   for (std::size_t r = 0; r < n; ++r) {
-    if (work.chain_size[r] < kMinChain) continue;
-    work.points.clear();
-    for (std::size_t i = 0; i < n; ++i)
-      if (root(work.parent, static_cast<int>(i)) == static_cast<int>(r)) add_samples(pieces[i], work.points);
-    Fit fit;
-    const float share = fit_and_check(work.points, tolerance_of(static_cast<int>(r)), fit);
-    if (share > best_share) best_share = share, best_chain = static_cast<int>(r);
+    if (work.chain_size[r] < 2) continue;
+    for (std::size_t q = r; q < n; ++q) {
+      const bool alone = q == r;
+      if (alone ? work.chain_size[r] < kMinChain : work.chain_size[q] < 2) continue;
+      work.points.clear();
+      add_chain(static_cast<int>(r));
+      if (!alone) add_chain(static_cast<int>(q));
+      Fit fit;
+      const float share = fit_and_check(work.points, tolerance_of(static_cast<int>(r)), fit);
+      if (share > best_share) best_share = share, best_chain = static_cast<int>(r), best_partner = alone ? -1 : static_cast<int>(q);
+    }
   }
   if (best_chain < 0) return;
 
-  // The best chain's ellipse, then every other chain whose points lie on it with the best one's
-  // (the circle cut by the halfway line or a robot is several chains): each joins when the fit
-  // of both still passes and covers more of the turn.
+  // The seed's ellipse, then every other chain whose points lie on it with the seed's (the circle
+  // cut by the halfway line or a robot is several chains): each joins when the fit of both still
+  // passes and covers more of the turn.
   const float tolerance = tolerance_of(best_chain);
   const auto reset = [&] {
     for (Point& p : work.points) p.inlier = 1;
   };
   work.points.clear();
-  for (std::size_t i = 0; i < n; ++i)
-    if (root(work.parent, static_cast<int>(i)) == best_chain) add_samples(pieces[i], work.points), work.on_ellipse[i] = 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int chain = root(work.parent, static_cast<int>(i));
+    if (chain == best_chain || chain == best_partner) add_samples(pieces[i], work.points), work.on_ellipse[i] = 1;
+  }
   Fit fit;
   float share = fit_and_check(work.points, tolerance, fit);
   if (share <= 0) return;
   for (std::size_t r = 0; r < n; ++r) {
-    if (static_cast<int>(r) == best_chain || work.chain_size[r] == 0) continue;
+    if (static_cast<int>(r) == best_chain || static_cast<int>(r) == best_partner || work.chain_size[r] == 0) continue;
     const std::size_t before = work.points.size();
     for (std::size_t i = 0; i < n; ++i)
       if (root(work.parent, static_cast<int>(i)) == static_cast<int>(r)) add_samples(pieces[i], work.points);

@@ -3,20 +3,23 @@
 //
 // The detector's minimum segment length (40 px in the method's configuration) leaves no straight
 // piece on a curve that bends quickly in the image. With `centre_circle` on, the frame is drawn
-// a second time from the same gradients (anchors every 4 px, pieces from `circle_piece_length`
+// a second time from the same gradients (anchors every 4 px, pieces from `piece_length`
 // px), and those pieces that the classifier calls markings and the stripes check keeps
 // (stripes.hpp) are the arc candidates. Two pieces chain when an end of one lies within two line
 // widths plus 6 px of an end of the other and their directions differ by 3 to 40 degrees (a
-// straight line broken in two does not bend; a corner bends more). A chain of at least three
-// pieces is fitted with a conic (algebraic least squares under a + c = 1, which holds for every
-// ellipse; five points per piece, centred and scaled), then again over a few rounds without the
-// points off the last fit (a straight piece linked into a chain pulls the first fit away). It is a
-// circle's image when the conic is an ellipse, its points lie on it (median Sampson distance at
-// most a third of the line width, at least 1.5 px), and they cover at least 60 degrees of it
-// (seen from its centre, in its own axes). Every other chain joins the best such ellipse when the
-// fit of both still passes and covers more of its turn (the circle cut by the halfway line or a
-// robot is several chains). At most one ellipse per frame (there is one centre circle);
-// its confidence is the share of the ellipse's turn its points cover.
+// straight line broken in two does not bend; a corner bends more). The seed is one chain of at
+// least three pieces or two chains of at least two (a flat ellipse's far and near arcs do not
+// chain round its sharply bending ends), fitted with a conic (algebraic least squares under
+// a + c = 1, which holds for every ellipse; three points per piece, centred and scaled), then
+// again over a few rounds without the points off the last fit (a straight piece linked into a
+// chain pulls the first fit away). It is a circle's image when the conic is an ellipse (axes at
+// least 4 px, at most 12:1), its points lie on it (the median Sampson distance at most half the
+// line width, at least 1.5 px: a piece is a chord, its middle inside the curve; three quarters
+// within twice that), and they cover at least 120 degrees of it (seen from its centre, in its own
+// axes). The best seed wins; every other chain joins it when the fit of both still passes and
+// covers more of the turn (the circle cut by the halfway line or a robot is several chains). At
+// most one ellipse per frame (there is one centre circle); its confidence is the share of the
+// turn its points cover.
 //
 // The fit is written out (a 5x5 solve on the stack) rather than cv::fitEllipse, which allocates
 // per call: warm detect allocates nothing with this stage on.

@@ -62,6 +62,7 @@ class LineDetector {
  private:
   struct Impl;
   const cv::Mat* normalise(const cv::Mat& image);  // to 8-bit BGR; nullptr if smaller than 3x3
+  void find_pieces(const cv::Mat& bgr, bool gain);  // junctions and circle (detector.cpp)
   DetectorParams params_;
   Thresholds thresholds_;
   bool find_boundary_ = false;

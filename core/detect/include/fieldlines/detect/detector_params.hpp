@@ -43,10 +43,10 @@ struct DetectorParams {
   bool intersections = false;
   double intersection_min_angle = 30;
   double intersection_reach = 2;
-  // The centre circle from short stripe pieces (centre_circle.hpp); off by default, and on it
-  // draws the frame a second time.
+  // The centre circle from short stripe pieces (centre_circle.hpp); off by default. On, or with
+  // intersections on, the frame is drawn a second time for pieces from piece_length px.
   bool centre_circle = false;
-  int circle_piece_length = 15;
+  int piece_length = 15;
   bool operator==(const DetectorParams&) const = default;
 };
 
@@ -117,8 +117,8 @@ inline constexpr std::array<ParamSpec, 22> kDetectorParamSpecs{{
      .help = "how far a line may end short of a crossing, in line widths (plus 4 px)", .slider = {0, 6}},
     {.name = "centre_circle", .member = &DetectorParams::centre_circle,
      .help = "fit the centre circle to short stripe pieces of a second drawing (runs the stripes stage too)"},
-    {.name = "circle_piece_length", .member = &DetectorParams::circle_piece_length, .range = {3, 10000},
-     .unit = "px", .help = "shortest piece of the second drawing", .slider = {5, 60}},
+    {.name = "piece_length", .member = &DetectorParams::piece_length, .range = {3, 10000},
+     .unit = "px", .help = "shortest piece of the second drawing (intersections, centre circle)", .slider = {5, 60}},
 }};
 
 // The spec named `name`, or nullptr.

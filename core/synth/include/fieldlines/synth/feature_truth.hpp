@@ -9,7 +9,8 @@
 // visible when it reaches 12 px from the centre inside the frame. Its type is what is visible:
 // 2 arms an L, 3 a T, 4 an X; fewer than 2 arms, or 2 nearly opposite, is no junction in the
 // image. Headings as soccer_vision_2d_msgs: radians in [0, 2pi), 0 along +x, pi/2 image down,
-// ascending. The centre circle's crossings with the halfway line are not included.
+// ascending. Junctions that do not meet these conditions, and the centre circle's crossings with
+// the halfway line, are `ignored`.
 //
 // The centre circle: the image ellipse of the whole circle (when all of it is in front of the
 // camera, cv::fitEllipse on 720 projected points of its centreline) and the share of it visible
@@ -31,6 +32,10 @@ struct TruthCircle {
 
 struct FeatureTruth {
   std::vector<Intersection> intersections;  // confidence 1
+  // Scored neither way (a detection within reach of one is no false positive, and it is not
+  // needed for recall): hidden or thinner than 1 px, cut by the frame to one line, and the
+  // centre circle's crossings with straight lines. Position only.
+  std::vector<Intersection> ignored;
   std::optional<TruthCircle> circle;        // none when not all of it is in front of the camera
 };
 
