@@ -171,14 +171,14 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
   }
   for (std::size_t i = 0; i < n; ++i) ++work.chain_size[static_cast<std::size_t>(root(work.parent, static_cast<int>(i)))];
 
-  // The tolerance of a chain: half its mean line width, at least 1.5 px (a piece is a chord: its
+  // The tolerance of a chain: half its mean line width, at least 2.5 px (a piece is a chord: its
   // middle lies inside the curve).
   const auto tolerance_of = [&](int chain) {
     float sum = 0;
     int count = 0;
     for (std::size_t i = 0; i < n; ++i)
       if (root(work.parent, static_cast<int>(i)) == chain) sum += pieces[i].width, ++count;
-    return std::max(1.5f, sum / static_cast<float>(std::max(count, 1)) / 2);
+    return std::max(2.5f, sum / static_cast<float>(std::max(count, 1)) / 2);
   };
   // The seed: one chain of at least kMinChain pieces, or two chains of at least two each (a flat
   // ellipse's far and near arcs, which do not chain round its sharply bending ends).
