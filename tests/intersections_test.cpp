@@ -137,6 +137,19 @@ TEST(Intersections, PiecesOfOneJunctionMerge) {
   EXPECT_TRUE(out.empty());
 }
 
+TEST(Intersections, OutOfTheFrameIsOutOfView) {
+  IntersectionWorkspace work;
+  std::vector<Intersection> out;
+  const std::vector<Marking> l{{2, 100, 2, 300, 6}, {-10, 100, 200, 100, 6}};  // corner at x = 2
+  find_intersections(l, intersections_on(), work, out, cv::Size(320, 240));
+  EXPECT_EQ(out.size(), 1u);
+  const std::vector<Marking> out_left{{-9, 100, -9, 300, 6}, {-20, 100, 200, 100, 6}};  // corner at x = -9
+  find_intersections(out_left, intersections_on(), work, out, cv::Size(320, 240));
+  EXPECT_TRUE(out.empty());
+  find_intersections(out_left, intersections_on(), work, out);
+  EXPECT_EQ(out.size(), 1u) << "without a frame, wherever it is";
+}
+
 TEST(Intersections, BadInputGivesNoneAndNeverCrashes) {
   cv::Mat grey(240, 320, CV_8UC3, cv::Scalar(110, 110, 110));  // no green
   cv::line(grey, cv::Point(20, 120), cv::Point(300, 130), kPaint, 6);

@@ -114,7 +114,7 @@ void LineDetector::find_pieces(const cv::Mat& bgr, bool gain) {
     impl_->lines.clear();
     for (std::size_t i = 0; i < impl_->arcs.size(); ++i)
       if (!on_ellipse[i]) impl_->lines.push_back(impl_->arcs[i]);
-    find_intersections(impl_->lines, params_, impl_->intersections, f.intersections);
+    find_intersections(impl_->lines, params_, impl_->intersections, f.intersections, bgr.size());
   }
   // The circle's pieces are markings too (arcs).
   for (std::size_t i = 0; i < impl_->arcs.size(); ++i)

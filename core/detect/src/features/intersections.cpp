@@ -104,7 +104,7 @@ const char* to_string(JunctionType type) {
 }
 
 void find_intersections(std::span<const Marking> markings, const DetectorParams& params,
-                        IntersectionWorkspace& work, std::vector<Intersection>& out) {
+                        IntersectionWorkspace& work, std::vector<Intersection>& out, cv::Size frame) {
   out.clear();
   work.junctions.clear();
   const float min_sin = static_cast<float>(std::sin(params.intersection_min_angle * std::numbers::pi / 180));
@@ -140,9 +140,12 @@ void find_intersections(std::span<const Marking> markings, const DetectorParams&
       }
     }
   }
+  const bool clip = !frame.empty();
   for (Junction& j : work.junctions) {
     Intersection i;
-    if (finish(j, i)) out.push_back(i);
+    if (!finish(j, i)) continue;
+    if (clip && !(i.x >= -0.5f && i.y >= -0.5f && i.x < frame.width - 0.5f && i.y < frame.height - 0.5f)) continue;
+    out.push_back(i);
   }
 }
 

@@ -20,6 +20,8 @@
 #include <span>
 #include <vector>
 
+#include <opencv2/core/types.hpp>
+
 #include "fieldlines/detect/detector_params.hpp"
 #include "fieldlines/detect/field_features.hpp"
 
@@ -40,8 +42,9 @@ struct IntersectionWorkspace {
   std::vector<Junction> junctions;
 };
 
-// Writes the junctions of `markings` into `out` (cleared first).
+// Writes the junctions of `markings` into `out` (cleared first). With a non-empty `frame`, a
+// junction whose centre lies outside it (lines that would meet out of view) is dropped.
 void find_intersections(std::span<const Marking> markings, const DetectorParams& params,
-                        IntersectionWorkspace& work, std::vector<Intersection>& out);
+                        IntersectionWorkspace& work, std::vector<Intersection>& out, cv::Size frame = {});
 
 }  // namespace fieldlines
