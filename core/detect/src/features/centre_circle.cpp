@@ -18,7 +18,7 @@ constexpr float kLinkWidths = 2, kLinkPx = 6;
 constexpr int kMinChain = 3;
 constexpr int kSamplesPerPiece = 3;
 constexpr int kCoverageBins = 36;
-constexpr float kMinCoverage = 120.f / 360;  // less was a corner and a stray piece as often as a circle
+constexpr float kMinCoverage = 150.f / 360;  // less was a corner and a stray piece as often as a circle
 constexpr float kMinSemiAxisPx = 4;
 constexpr float kMaxAxisRatio = 12;  // a circle seen at 5 degrees above the turf
 

@@ -15,7 +15,7 @@
 // chain pulls the first fit away). It is a circle's image when the conic is an ellipse (axes at
 // least 4 px, at most 12:1), its points lie on it (the median Sampson distance at most half the
 // line width, at least 2.5 px: a piece is a chord, its middle inside the curve; three quarters
-// within twice that), and they cover at least 120 degrees of it (seen from its centre, in its own
+// within twice that), and they cover at least 150 degrees of it (seen from its centre, in its own
 // axes). The best seed wins; every other chain joins it when the fit of both still passes and
 // covers more of the turn (the circle cut by the halfway line or a robot is several chains). At
 // most one ellipse per frame (there is one centre circle); its confidence is the share of the
