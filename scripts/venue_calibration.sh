@@ -3,6 +3,8 @@
 # Per venue: calibrate on the venue's frames that have no hand-drawn truth, then score the
 # frames that have one (tests/data/hand_truth/<venue>, docs/calibration.md) with
 #   the built-in thresholds, the calibration without and with per-frame light adaptation,
+#   the built-in thresholds and the calibration with light adaptation, each with the stripes
+#   stage on (stripes.hpp: markings must be turf, paint, turf),
 # and the recall ceiling (every segment called a marking: the share of line edges on any
 # segment) of the detector parameters used. Prints Markdown. Before/after overlays of the scored
 # frames go to OUT_DIR/overlays/<venue>/{built-in,calibrated}/ (not into docs/: they are the
@@ -30,6 +32,12 @@ t["classes"]["marking"].update(max_angle_deg=90, min_projection=0, min_length=0)
 t["classes"]["boundary"].update(max_angle_deg=0, min_projection=1000, min_length=100000)
 json.dump(t, open(sys.argv[2], "w"))
 PY
+stripes() {  # THRESHOLDS -> the same file with the stripes stage on, beside it
+  local on="${1%.json}-stripes.json"
+  [[ $1 == assets/* ]] && on="$out/$(basename "${1%.json}")-stripes.json"
+  python3 -c "import json,sys; t=json.load(open(sys.argv[1])); t['detector']['stripes']=True; json.dump(t, open(sys.argv[2], 'w'))" "$1" "$on"
+  echo "$on"
+}
 score() {  # VENUE THRESHOLDS -> "P | R"
   "$bin" eval --hand "tests/data/hand_truth/$1" --data "$data" --thresholds "$2" --json "$out/score.json" >/dev/null
   python3 -c "import json; m=json.load(open('$out/score.json'))['total']['marking']; print('%.3f | %.3f' % (m['precision'], m['recall']))"
@@ -48,6 +56,7 @@ for v in "${venues[@]}"; do
   fitted=$(ls "$out/$id" | wc -l)
   n_scored=$(wc -w <<<"$scored")
   echo "| $title | $fitted / $n_scored | built-in | $(score "$id" assets/default_thresholds.json) | |"
+  echo "| | | built-in + stripes | $(score "$id" "$(stripes assets/default_thresholds.json)") | |"
   for mode in no-light light; do
     flag=(); [[ $mode == no-light ]] && flag=(--no-light-adaptation)
     label="calibrated"; [[ $mode == light ]] && label="calibrated + light adaptation"
@@ -60,6 +69,9 @@ if m['warning']: parts.append(m['warning'])
 if not f['boundary']['fitted']: parts.append('boundary off')
 print('; '.join(parts))")
       echo "| | | $label | $(score "$id" "$out/$id-$mode.json") | $says |"
+      if [[ $mode == light ]]; then
+        echo "| | | $label + stripes | $(score "$id" "$(stripes "$out/$id-$mode.json")") | |"
+      fi
     else
       echo "| | | $label | | | refused: $(sed 's/^fieldlines calibrate: error: //' "$out/$id-$mode.err" | tr '\n' ' ') |"
     fi

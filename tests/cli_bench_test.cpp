@@ -88,7 +88,8 @@ TEST_F(CliBench, JsonListsAllSevenRowsInBothOrders) {
     else EXPECT_GT(segments, 0) << d;
   }
   EXPECT_EQ(names,
-            (std::vector<std::string>{"fieldlines", "fieldlines+light", "edlines", "fld", "lsd", "gradients", "floor"}));
+            (std::vector<std::string>{"fieldlines", "fieldlines+light", "fieldlines+stripes", "edlines", "fld", "lsd",
+                                      "gradients", "floor"}));
   // The light adaptation finds the same segments (the field's colour is the reference's here).
   EXPECT_EQ(rows["fieldlines+light"]["segments_per_image"], rows["fieldlines"]["segments_per_image"]);
   // Ours against ours is 1 in every order and round.

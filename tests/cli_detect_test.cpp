@@ -112,6 +112,91 @@ TEST_F(CliDetect, JsonHasTheSchemaAndTheLibrarysExactSegments) {
   EXPECT_NE(r.out.find("field.png: " + std::to_string(expected.size()) + " segments"), std::string::npos) << r.out;
 }
 
+// --stripes turns the stripes stage on (the library's markings, in soccer_vision_2d_msgs' names);
+// without it, or with --no-stripes over a thresholds file that turns it on, "markings" is empty.
+TEST_F(CliDetect, StripesWriteTheLibrarysMarkings) {
+  const cv::Mat img = synthetic_field(640, 480);
+  const fs::path path = write_image("field.png", img);
+  const fs::path on = dir_ / "on.json", off = dir_ / "off.json", forced_off = dir_ / "forced_off.json";
+  ASSERT_EQ(run({"detect", "--quiet", "--stripes", "--json", on.string(), path.string()}).exit_code, 0);
+  ASSERT_EQ(run({"detect", "--quiet", "--json", off.string(), path.string()}).exit_code, 0);
+  fieldlines::DetectorParams params;
+  params.stripes = true;
+  fieldlines::LineDetector detector(params);
+  const auto segments = detector.detect(img);
+  const auto& expected = detector.features().markings;
+  ASSERT_FALSE(expected.empty());
+  const json markings = read_json(on)["images"][0].at("markings");
+  ASSERT_EQ(markings.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(markings[i].size(), 5u);
+    EXPECT_FLOAT_EQ(markings[i].at("x0").get<float>(), expected[i].x0);
+    EXPECT_FLOAT_EQ(markings[i].at("y0").get<float>(), expected[i].y0);
+    EXPECT_FLOAT_EQ(markings[i].at("x1").get<float>(), expected[i].x1);
+    EXPECT_FLOAT_EQ(markings[i].at("y1").get<float>(), expected[i].y1);
+    EXPECT_FLOAT_EQ(markings[i].at("width").get<float>(), expected[i].width);
+  }
+  EXPECT_TRUE(read_json(off)["images"][0].at("markings").empty());
+
+  fieldlines::ThresholdsFile file;
+  file.detector.stripes = true;
+  const fs::path thresholds = dir_ / "stripes.json";
+  fieldlines::save_thresholds_file(thresholds, file);
+  ASSERT_EQ(run({"detect", "--quiet", "--thresholds", thresholds.string(), "--no-stripes", "--json", forced_off.string(),
+                 path.string()}).exit_code, 0);
+  EXPECT_TRUE(read_json(forced_off)["images"][0].at("markings").empty());
+  EXPECT_EQ(run({"detect", "--stripes", "--no-stripes", path.string()}).exit_code, 2);
+}
+
+// --features: every image's "intersections" and "ellipses" exactly as the library finds them, in
+// soccer_vision_2d_msgs' names, and an overlay drawn; without it both are empty.
+TEST_F(CliDetect, FeaturesWriteIntersectionsAndEllipses) {
+  cv::Mat img(480, 640, CV_8UC3, cv::Scalar(50, 140, 40));
+  cv::line(img, cv::Point(60, 150), cv::Point(590, 170), cv::Scalar(255, 255, 255), 8);
+  cv::line(img, cv::Point(320, 160), cv::Point(300, 440), cv::Scalar(255, 255, 255), 8);
+  cv::ellipse(img, cv::RotatedRect(cv::Point2f(330, 330), cv::Size2f(380, 150), 0), cv::Scalar(255, 255, 255), 7);
+  cv::Mat noise(img.size(), CV_8UC3);
+  cv::randu(noise, 0, 8);
+  img += noise;
+  const fs::path path = write_image("t.png", img);
+  const fs::path on = dir_ / "on.json", off = dir_ / "off.json", draw = dir_ / "draw";
+  ASSERT_EQ(run({"detect", "--quiet", "--features", "--json", on.string(), "--draw", draw.string(), path.string()})
+                .exit_code, 0);
+  ASSERT_EQ(run({"detect", "--quiet", "--json", off.string(), path.string()}).exit_code, 0);
+  EXPECT_TRUE(fs::exists(draw / "t.png"));
+  fieldlines::DetectorParams params;
+  params.stripes = params.intersections = params.centre_circle = true;
+  fieldlines::LineDetector detector(params);
+  detector.detect(img);
+  const fieldlines::FieldFeatures& expected = detector.features();
+  ASSERT_FALSE(expected.intersections.empty());
+  ASSERT_FALSE(expected.ellipses.empty());
+  const json image = read_json(on)["images"][0];
+  const json& junctions = image.at("intersections");
+  ASSERT_EQ(junctions.size(), expected.intersections.size());
+  for (std::size_t i = 0; i < junctions.size(); ++i) {
+    const fieldlines::Intersection& e = expected.intersections[i];
+    const json& j = junctions[i];
+    EXPECT_EQ(j.size(), 6u);
+    EXPECT_FLOAT_EQ(j.at("x").get<float>(), e.x);
+    EXPECT_FLOAT_EQ(j.at("y").get<float>(), e.y);
+    EXPECT_EQ(j.at("type").get<std::string>(), fieldlines::to_string(e.type));
+    EXPECT_EQ(j.at("num_rays").get<int>(), e.num_rays);
+    ASSERT_EQ(j.at("heading_rays").size(), static_cast<std::size_t>(e.num_rays));
+    for (int k = 0; k < e.num_rays; ++k)
+      EXPECT_FLOAT_EQ(j["heading_rays"][static_cast<std::size_t>(k)].get<float>(), e.heading_rays[static_cast<std::size_t>(k)]);
+    EXPECT_FLOAT_EQ(j.at("confidence").get<float>(), e.confidence);
+  }
+  const json& ellipses = image.at("ellipses");
+  ASSERT_EQ(ellipses.size(), expected.ellipses.size());
+  for (const char* key : {"cx", "cy", "width", "height", "angle_deg", "confidence"}) EXPECT_TRUE(ellipses[0].contains(key));
+  EXPECT_FLOAT_EQ(ellipses[0].at("cx").get<float>(), expected.ellipses[0].cx);
+  EXPECT_FLOAT_EQ(ellipses[0].at("angle_deg").get<float>(), expected.ellipses[0].angle_deg);
+  EXPECT_TRUE(read_json(off)["images"][0].at("intersections").empty());
+  EXPECT_TRUE(read_json(off)["images"][0].at("ellipses").empty());
+  EXPECT_EQ(run({"detect", "--features", "--no-stripes", path.string()}).exit_code, 2);
+}
+
 TEST_F(CliDetect, FoldersAreSortedAndThreadsKeepTheInputOrder) {
   std::vector<std::string> names;
   for (int i = 0; i < 7; ++i) {

@@ -224,6 +224,38 @@ TEST(DetectAllocations, NoneWithLightAdaptation) {
   expect_warm_detect_allocates_nothing(frames, names, {}, t);
 }
 
+// Every field feature stage on: the stripes, their intersections, the centre circle.
+DetectorParams all_features() {
+  DetectorParams p;
+  p.stripes = true;
+  p.intersections = true;
+  p.centre_circle = true;
+  return p;
+}
+
+// The stripes stage (stripes.hpp) measures its profiles in the detector's workspace and writes
+// the markings into the detector's features: still nothing.
+TEST(DetectAllocations, NoneWithStripes) {
+  std::vector<cv::Mat> frames;
+  std::vector<std::string> names;
+  for (int shift = 0; shift < 4; ++shift) {
+    frames.push_back(test::synthetic_field(640, 480, shift * 5));
+    names.push_back("synthetic shift " + std::to_string(shift * 5));
+  }
+  DetectorParams stripes;
+  stripes.stripes = true;
+  LineDetector probe(stripes);
+  probe.detect(frames.front());
+  ASSERT_FALSE(probe.features().markings.empty()) << "the frames must exercise the stripes";
+  expect_warm_detect_allocates_nothing(frames, names, stripes);
+  stripes.stripe_require_twin = true;
+  Thresholds t;
+  t.light = {true, {40, 120, 40}};
+  t.field_boundary_gate = true;
+  expect_warm_detect_allocates_nothing(frames, names, stripes, t);
+  expect_warm_detect_allocates_nothing(frames, names, all_features(), t);
+}
+
 // With threads > 1 the workers start on the first detect and are woken per frame without a heap
 // call; the counter sees every thread's allocations.
 TEST(DetectAllocations, NoneWithTwoThreadsOnFramesOfOneSize) {
@@ -260,6 +292,10 @@ TEST(DetectAllocations, NoneWhenSizesAlternateAfterTheLargest) {
   DetectorParams two;  // 320x240 splits into two bands, so does every other size
   two.threads = 2;
   expect_none_when_sizes_alternate(two);
+  DetectorParams stripes;  // profiles as long as the tallest frame allows
+  stripes.stripes = true;
+  expect_none_when_sizes_alternate(stripes);
+  expect_none_when_sizes_alternate(all_features());
 }
 
 std::vector<fs::path> images_in(const fs::path& dir) {
@@ -270,6 +306,7 @@ std::vector<fs::path> images_in(const fs::path& dir) {
 }
 
 void expect_none_on_folder(const fs::path& dir, std::size_t expected_frames, const DetectorParams& params = {}) {
+  SCOPED_TRACE(params.intersections ? "all features on" : (params.stripes ? "stripes on" : "stripes off"));
   std::vector<cv::Mat> frames;
   std::vector<std::string> names;
   for (const fs::path& p : images_in(dir)) {
@@ -288,11 +325,26 @@ TEST(DetectAllocations, NoneOnTheAuthorsSslFrames) {
   DetectorParams two;
   two.threads = 2;
   expect_none_on_folder(dir, 41, two);
+  DetectorParams stripes;
+  stripes.stripes = true;
+  expect_none_on_folder(dir, 41, stripes);
+  LineDetector probe(all_features());
+  std::size_t found = 0;
+  for (const fs::path& p : images_in(dir)) {
+    probe.detect(cv::imread(p.string(), cv::IMREAD_COLOR));
+    found += probe.features().intersections.size();
+  }
+  ASSERT_GT(found, 0u) << "the frames must exercise the intersections";
+  expect_none_on_folder(dir, 41, all_features());
 }
 
 TEST(DetectAllocations, NoneOnHumanoidFramesOfTwoSizes) {
   FIELDLINES_REQUIRE_SHARED("data/humanoid-samples", dir);
   expect_none_on_folder(dir, 9);  // 640x360 and 800x600, interleaved by name
+  DetectorParams stripes;
+  stripes.stripes = true;
+  expect_none_on_folder(dir, 9, stripes);
+  expect_none_on_folder(dir, 9, all_features());
 }
 
 }  // namespace

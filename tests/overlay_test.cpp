@@ -149,3 +149,49 @@ TEST(Overlay, DrawsTheStudiosPaletteOverADarkOutline) {
   EXPECT_EQ(at(white, 200, 120), cv::Vec3b(1, 2, 3));
   EXPECT_TRUE(outline_rows(white).size() >= 2);
 }
+
+// The field features: centre lines, the ellipse and each junction (ring, rays, type letter) in
+// the feature colour; non-finite values and an empty result draw nothing and never crash.
+namespace fieldlines {
+namespace {
+
+// Pixels within 40 per channel of `colour` (edges are anti-aliased).
+int pixels_of(const cv::Mat& canvas, const cv::Scalar& colour) {
+  cv::Mat hit;
+  cv::inRange(canvas, colour - cv::Scalar::all(40), colour + cv::Scalar::all(40), hit);
+  return cv::countNonZero(hit);
+}
+
+TEST(Overlay, FieldFeaturesInTheirColour) {
+  const cv::Mat turf(240, 320, CV_8UC3, cv::Scalar(40, 140, 50));
+  const cv::Scalar colour = bgr(palette::kFeature);
+  OverlayParams params;
+  params.thickness = 3;
+  cv::Mat canvas = turf.clone();
+  draw_field_features(canvas, FieldFeatures{});
+  EXPECT_EQ(cv::norm(canvas, turf, cv::NORM_INF), 0) << "nothing to draw";
+
+  FieldFeatures f;
+  f.markings.push_back({20, 200, 300, 210, 6});
+  f.ellipses.push_back({160, 120, 200, 80, 5, 0.8f});
+  Intersection t{.x = 100, .y = 60, .type = JunctionType::T, .num_rays = 3, .heading_rays = {0, 1.5708f, 3.1416f, 0}};
+  f.intersections.push_back(t);
+  draw_field_features(canvas, f, params);
+  EXPECT_GT(pixels_of(canvas, colour), 300);
+  // The junction's ring and rays lie around its centre.
+  const cv::Mat around = canvas(cv::Rect(80, 40, 40, 40));
+  EXPECT_GT(pixels_of(around, colour), 20);
+
+  FieldFeatures bad;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  bad.markings.push_back({nan, 0, 10, 10, 1});
+  bad.ellipses.push_back({nan, 0, 10, 10, 0, 1});
+  bad.ellipses.push_back({10, 10, 0, -5, 0, 1});
+  bad.intersections.push_back({.x = nan, .y = 5, .num_rays = 2});
+  bad.intersections.push_back({.x = 5, .y = 5, .num_rays = 9});
+  cv::Mat other = turf.clone();
+  EXPECT_NO_THROW(draw_field_features(other, bad));
+}
+
+}  // namespace
+}  // namespace fieldlines

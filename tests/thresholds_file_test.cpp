@@ -52,6 +52,36 @@ TEST(ThresholdsFile, RoundTrips) {
   EXPECT_EQ(g.provenance, f.provenance);
 }
 
+// The stripes stage (stripes.hpp) and its parameters are detector parameters: written and read
+// with the others; a file from before them (the shipped default among them) reads with the stage off.
+TEST(ThresholdsFile, KeepsTheStripesAndReadsOldFilesWithThemOff) {
+  fl::ThresholdsFile f = sample();
+  f.detector.stripes = true;
+  f.detector.stripe_samples = 9;
+  f.detector.stripe_max_width = 0.2;
+  f.detector.stripe_require_twin = true;
+  const fs::path p = temp("stripes.json");
+  fl::save_thresholds_file(p, f);
+  const fl::ThresholdsFile g = fl::load_thresholds_file(p);
+  fs::remove(p);
+  EXPECT_EQ(g.detector, f.detector);
+  EXPECT_TRUE(g.detector.stripes);
+
+  nlohmann::json old = fl::to_json(sample());
+  for (const char* key : {"stripes", "stripe_samples", "stripe_max_width", "stripe_require_twin"})
+    ASSERT_EQ(old["detector"].erase(key), 1u) << key;
+  const fl::ThresholdsFile h = fl::thresholds_file_from_json(old, "old.json");
+  EXPECT_FALSE(h.detector.stripes);
+  EXPECT_EQ(h.detector, sample().detector);
+  const fl::ThresholdsFile shipped = fl::load_thresholds_file(FIELDLINES_SOURCE_DIR "/assets/default_thresholds.json");
+  EXPECT_FALSE(shipped.detector.stripes);
+
+  EXPECT_NE(load_error(R"({"format": "fieldlines-thresholds", "version": 1, "detector": {"stripes": 1},
+      "gradient_mode": "axes", "classes": {}})").find("detector.stripes: expected true or false"), std::string::npos);
+  EXPECT_NE(load_error(R"({"format": "fieldlines-thresholds", "version": 1, "detector": {"stripe_samples": 0},
+      "gradient_mode": "axes", "classes": {}})").find("stripe_samples: 0 is outside [1, 32]"), std::string::npos);
+}
+
 TEST(ThresholdsFile, RejectsNewerVersionsMalformedJsonAndBadRanges) {
   nlohmann::json j = fl::to_json(sample());
   j["version"] = fl::kThresholdsFileVersion + 1;

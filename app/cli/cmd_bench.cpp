@@ -32,6 +32,9 @@ constexpr const char* kHelp = R"(usage: fieldlines bench [options] PATH...
 Times, in this process, on the same colour images and on one thread (cv::setNumThreads(1);
 our rows may take more with --detector-threads):
   fieldlines  our LineDetector: ELSED + colour gradients + classification
+  fieldlines+light, fieldlines+stripes
+              the same with the per-frame light adaptation, or with the stripes stage (every
+              marking checked and measured across its width)
   edlines     OpenCV ximgproc EdgeDrawing in EDLines mode (detectEdges + detectLines)
   fld         OpenCV ximgproc FastLineDetector
   lsd         OpenCV LineSegmentDetector
@@ -204,8 +207,8 @@ int cmd_bench(const Args& args) {
   std::printf("ms: median call, %s time; ours/this: median over rounds of the round's ratio; worse: the larger, "
               "[min-max over rounds, order]\n\n",
               peers::clock_name(rounds.clock));
-  std::printf("%-11s %9s %11s %13s   %s\n", "", "", "", "", "------------ ours/this ------------");
-  std::printf("%-11s %9s %11s %13s   %6s %8s  %s\n", "detector", "block ms", "interl. ms", "segments/img", "block",
+  std::printf("%-18s %9s %11s %13s   %s\n", "", "", "", "", "------------ ours/this ------------");
+  std::printf("%-18s %9s %11s %13s   %6s %8s  %s\n", "detector", "block ms", "interl. ms", "segments/img", "block",
               "interl.", "worse [min-max, order]");
   nlohmann::ordered_json detectors_json = nlohmann::ordered_json::array();
   for (const auto& t : times) {
@@ -214,7 +217,7 @@ int cmd_bench(const Args& args) {
     const std::vector<double> block = t.pooled(peers::Order::Block), inter = t.pooled(peers::Order::Interleaved);
     std::vector<double> all = block;
     all.insert(all.end(), inter.begin(), inter.end());
-    std::printf("%-11s %9.3f %11.3f %13.1f   %6.2f %8.2f  %s\n", t.name.c_str(), peers::quantile(block, 0.5),
+    std::printf("%-18s %9.3f %11.3f %13.1f   %6.2f %8.2f  %s\n", t.name.c_str(), peers::quantile(block, 0.5),
                 peers::quantile(inter, 0.5), per_image, r.by_order[0], r.by_order[1], worse_text(r).c_str());
     nlohmann::ordered_json row_json{{"name", t.name}};
     row_json.update(calls_json(all));  // "median_ms", "p90_ms" over both orders

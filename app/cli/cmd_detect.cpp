@@ -47,6 +47,13 @@ options:
   --draw DIR        write an overlay per image to DIR/<name>.png
                     (the studio's palette: marking magenta, boundary blue, none yellow,
                     each over a dark outline; legend top-left)
+  --stripes         keep only markings that are painted stripes (turf, paint, turf) and write
+                    their centre lines and widths ("markings" in --json); the thresholds file's
+                    "stripes" parameter otherwise (default off: the reference's behaviour)
+  --no-stripes      the stage off, whatever the thresholds file says
+  --features        every field feature stage on: the stripes, their L/T/X intersections
+                    ("intersections" in --json) and the centre circle ("ellipses"); each is
+                    also a thresholds file parameter (stripes, intersections, centre_circle)
   --threads N       images processed in parallel, one detector per thread (default 1);
                     outputs keep the input order
   --quiet           no per-image lines on stdout, no progress on stderr
@@ -79,11 +86,18 @@ struct Options {
   std::optional<fs::path> thresholds, json, csv, draw;  // json and csv checked as output paths
   int threads = 1;
   bool quiet = false;
+  std::optional<bool> stripes;  // overrides the thresholds file's
+  bool features = false;        // turns every feature stage on
   std::vector<std::string> paths;
   std::optional<std::string> video;
   std::optional<fs::path> video_out;
   long max_frames = -1;
 };
+
+void apply_feature_options(const Options& opt, DetectorParams& params) {
+  if (opt.stripes) params.stripes = *opt.stripes;
+  if (opt.features) params.stripes = params.intersections = params.centre_circle = true;
+}
 
 // Output files are checked here, before a possibly long batch, not after it.
 Options parse(const ParsedArgs& a) {
@@ -94,6 +108,11 @@ Options parse(const ParsedArgs& a) {
   if (const auto v = a.value("--draw")) o.draw = *v;
   o.threads = a.int_or("--threads", 1, 1, 256);
   o.quiet = a.flag("--quiet");
+  if (a.flag("--stripes") && a.flag("--no-stripes")) throw Error("--stripes and --no-stripes exclude each other");
+  if (a.flag("--stripes")) o.stripes = true;
+  if (a.flag("--no-stripes")) o.stripes = false;
+  o.features = a.flag("--features");
+  if (o.features && o.stripes == false) throw Error("--features and --no-stripes exclude each other");
   o.paths = a.positionals();
   o.video = a.value("--video");
   o.video_out = output_path(a, "--video-out");
@@ -150,7 +169,7 @@ std::string summary_line(const ImageDetections& d) {
 int cmd_detect(const Args& args) {
   const auto parsed = parse_or_print_help(
       args, {"--thresholds", "--json", "--csv", "--draw", "--threads", "--video", "--video-out", "--max-frames"},
-      {"--quiet"}, help_text());
+      {"--quiet", "--stripes", "--no-stripes", "--features"}, help_text());
   if (!parsed) return 0;
   const Options opt = parse(*parsed);
   if (opt.video) {
@@ -158,6 +177,7 @@ int cmd_detect(const Args& args) {
       throw Error("--video takes no PATH, --json, --csv or --draw (use --video-out for overlays)");
     ThresholdsFile video_config;
     if (opt.thresholds) video_config = load_thresholds_file(*opt.thresholds);
+    apply_feature_options(opt, video_config.detector);
     return run_video_detection({*opt.video, opt.video_out, opt.max_frames, opt.quiet}, video_config);
   }
   if (opt.video_out || opt.max_frames >= 0) throw Error("--video-out and --max-frames go with --video");
@@ -171,6 +191,7 @@ int cmd_detect(const Args& args) {
 
   ThresholdsFile config;  // defaults: the reference's parameters and thresholds
   if (opt.thresholds) config = load_thresholds_file(*opt.thresholds);
+  apply_feature_options(opt, config.detector);
   ImageInputs inputs = expand_image_inputs(opt.paths);
   const std::vector<fs::path>& images = inputs.images;
   const auto overlays = opt.draw ? overlay_paths(images, *opt.draw) : std::vector<fs::path>{};
@@ -201,10 +222,14 @@ int cmd_detect(const Args& args) {
       detector.detect(image, d.segments);
       d.detect_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       d.field_boundary = detector.field_boundary().points;
+      const FieldFeatures& features = detector.features();
+      d.markings = features.markings;
+      d.intersections = features.intersections;
+      d.ellipses = features.ellipses;
       if (opt.draw) {
         std::vector<unsigned char> png;
         cv::Mat overlay = draw_overlay(image, d.segments);
-        draw_field_boundary(overlay, detector.field_boundary().points);
+        draw_field_features(overlay, features);
         if (!cv::imencode(".png", overlay, png))
           throw Error("could not encode the overlay as PNG");
         write_output_file(overlays[i], std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));

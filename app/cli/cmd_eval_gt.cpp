@@ -13,6 +13,7 @@
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/synth/feature_truth.hpp"
 #include "fieldlines/synth/gt_eval.hpp"
 #include "fieldlines/synth/hand_truth.hpp"
 #include "fieldlines/data/image_io.hpp"
@@ -45,6 +46,12 @@ options:
   --hand DIR         a folder of hand-truth files (more folders as extra arguments)
   --data DATA        the folder the hand-truth files' "image" paths are relative to
   --thresholds FILE  detector parameters and thresholds (default: the built-in defaults)
+  --features         every field feature stage on (stripes, intersections, centre circle); with
+                     --gt, and whenever the thresholds turn intersections or the centre circle
+                     on, a second table scores them against the truth of the frames' field and
+                     camera: intersections matched within 6 px (precision, recall, type correct
+                     of matched) and the centre circle found on frames showing >= 30 % of it
+                     (centre within 10 % of its radius; wrong: ellipses matching no circle)
   --max-distance PX  edge match distance (default 2.5)
   --min-width PX     painted parts narrower than this do not count in recall (default 1)
   --markdown         print the table as Markdown
@@ -60,8 +67,10 @@ examples:
 
 struct Group {
   GtScore score;
+  synth::FeatureScore features;
   double detect_ms = 0;
 };
+
 
 // "-" where a score is undefined (nothing predicted, or nothing visible: Kid has no wall).
 std::string fmt(double value, bool defined) {
@@ -88,6 +97,21 @@ void print_row(bool markdown, const std::string& scene, const std::string& condi
   }
 }
 
+void print_feature_row(bool markdown, const std::string& scene, const std::string& condition, const Group& g) {
+  const synth::FeatureScore& f = g.features;
+  const std::string p = fmt(f.precision(), f.detected > 0), r = fmt(f.recall(), f.truth > 0),
+                    t = fmt(f.type_accuracy(), f.matched > 0), c = fmt(f.circle_rate(), f.circles > 0);
+  if (markdown) {
+    std::printf("| %s | %s | %ld | %ld | %s | %s | %s | %ld/%ld | %s | %ld/%ld |\n", scene.c_str(), condition.c_str(),
+                f.truth, f.detected, p.c_str(), r.c_str(), t.c_str(), f.circles_found, f.circles, c.c_str(),
+                f.ellipses_wrong, f.ellipses);
+  } else {
+    std::printf("%-12s %-11s %6ld %6ld %7s %7s %7s %5ld/%-5ld %7s %5ld/%ld\n", scene.c_str(), condition.c_str(), f.truth,
+                f.detected, p.c_str(), r.c_str(), t.c_str(), f.circles_found, f.circles, c.c_str(), f.ellipses_wrong,
+                f.ellipses);
+  }
+}
+
 nlohmann::json to_json(const Group& g) {
   auto cls = [](const GtClassScore& c) {
     return nlohmann::json{{"predicted", c.predicted}, {"correct", c.correct},     {"precision", c.precision()},
@@ -97,7 +121,14 @@ nlohmann::json to_json(const Group& g) {
           {"marking", cls(g.score.marking)},
           {"boundary", cls(g.score.boundary)},
           {"none", {{"predicted", g.score.none_predicted}, {"correct", g.score.none_correct}}},
-          {"detect_ms_mean", g.score.images > 0 ? g.detect_ms / g.score.images : 0.0}};
+          {"detect_ms_mean", g.score.images > 0 ? g.detect_ms / g.score.images : 0.0},
+          {"intersections", {{"truth", g.features.truth}, {"detected", g.features.detected},
+                             {"matched", g.features.matched}, {"type_correct", g.features.type_correct},
+                             {"precision", g.features.precision()}, {"recall", g.features.recall()},
+                             {"type_accuracy", g.features.type_accuracy()}}},
+          {"circle", {{"frames", g.features.circles}, {"found", g.features.circles_found},
+                      {"rate", g.features.circle_rate()}, {"ellipses", g.features.ellipses},
+                      {"ellipses_wrong", g.features.ellipses_wrong}}}};
 }
 
 }  // namespace
@@ -155,7 +186,8 @@ std::vector<EvalItem> hand_items(const std::vector<fs::path>& dirs, const fs::pa
 
 int cmd_eval_gt(const Args& args) {
   const auto parsed = parse_or_print_help(
-      args, {"--gt", "--hand", "--data", "--thresholds", "--max-distance", "--min-width", "--json"}, {"--markdown"},
+      args, {"--gt", "--hand", "--data", "--thresholds", "--max-distance", "--min-width", "--json"},
+      {"--markdown", "--features"},
       kHelp);
   if (!parsed) return 0;
   const ParsedArgs& a = *parsed;
@@ -170,6 +202,8 @@ int cmd_eval_gt(const Args& args) {
   const auto json_path = output_path(a, "--json");  // checked before the detection runs
   ThresholdsFile file;
   if (const auto t = a.value("--thresholds")) file = load_thresholds_file(*t);
+  if (a.flag("--features")) file.detector.stripes = file.detector.intersections = file.detector.centre_circle = true;
+  const bool features = !hand && (file.detector.intersections || file.detector.centre_circle);
   GtMatchParams match;
   match.max_distance_px = static_cast<float>(a.double_or("--max-distance", match.max_distance_px, 0.1, 50));
   match.min_width_px = static_cast<float>(a.double_or("--min-width", match.min_width_px, 0, 100));
@@ -188,9 +222,14 @@ int cmd_eval_gt(const Args& args) {
       const std::vector<Segment> segments = detector.detect(img);
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       const GtScore score = GtEdges(item.truth, match).score(segments);
+      synth::FeatureScore feature_score;
+      if (features) {
+        const auto ft = synth::feature_truth(item.truth);
+        feature_score = synth::score_features(ft, detector.features());
+      }
       Group& g = groups[{item.row, item.condition}];
-      g.score += score, g.detect_ms += ms;
-      total.score += score, total.detect_ms += ms;
+      g.score += score, g.features += feature_score, g.detect_ms += ms;
+      total.score += score, total.features += feature_score, total.detect_ms += ms;
     } catch (const Error& e) {
       std::fprintf(stderr, "fieldlines eval: %s\n", e.what());
       ++failed;
@@ -213,6 +252,18 @@ int cmd_eval_gt(const Args& args) {
     out["groups"].push_back(j);
   }
   print_row(markdown, "all", "all", total);
+  if (features) {
+    std::printf("\n");
+    if (markdown) {
+      std::printf("| scene | condition | true junctions | detected | precision | recall | type correct | "
+                  "circles found | circle rate | wrong ellipses |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    } else {
+      std::printf("%-12s %-11s %6s %6s %7s %7s %7s %11s %7s %s\n", "scene", "condition", "true J", "det J", "J prec",
+                  "J rec", "J type", "circles", "rate", "wrong/ellipses");
+    }
+    for (const auto& [key, g] : groups) print_feature_row(markdown, key.first, key.second, g);
+    print_feature_row(markdown, "all", "all", total);
+  }
   out["total"] = to_json(total);
   if (json_path) write_file_atomically(*json_path, out.dump(2) + "\n");
   return failed > 0 ? 1 : 0;

@@ -1,5 +1,7 @@
 #include "app/cli/detections_json.hpp"
 
+#include <algorithm>
+
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -37,13 +39,35 @@ nlohmann::ordered_json to_json(const ImageDetections& image) {
   nlohmann::ordered_json boundary = nlohmann::ordered_json::array();
   for (const FieldBoundary::Point& p : image.field_boundary)
     boundary.push_back(nlohmann::ordered_json::array({finite_or_zero(p.x), finite_or_zero(p.y)}));
+  // Keys as soccer_vision_2d_msgs' MarkingSegment, MarkingIntersection and MarkingEllipse name
+  // them; other tools read them.
+  nlohmann::ordered_json markings = nlohmann::ordered_json::array();
+  for (const Marking& m : image.markings)
+    markings.push_back({{"x0", finite_or_zero(m.x0)}, {"y0", finite_or_zero(m.y0)}, {"x1", finite_or_zero(m.x1)},
+                        {"y1", finite_or_zero(m.y1)}, {"width", finite_or_zero(m.width)}});
+  nlohmann::ordered_json intersections = nlohmann::ordered_json::array();
+  for (const Intersection& j : image.intersections) {
+    nlohmann::ordered_json rays = nlohmann::ordered_json::array();
+    for (int k = 0; k < std::clamp(j.num_rays, 0, 4); ++k) rays.push_back(finite_or_zero(j.heading_rays[static_cast<std::size_t>(k)]));
+    intersections.push_back({{"x", finite_or_zero(j.x)}, {"y", finite_or_zero(j.y)}, {"type", to_string(j.type)},
+                             {"num_rays", j.num_rays}, {"heading_rays", std::move(rays)},
+                             {"confidence", finite_or_zero(j.confidence)}});
+  }
+  nlohmann::ordered_json ellipses = nlohmann::ordered_json::array();
+  for (const MarkingEllipse& e : image.ellipses)
+    ellipses.push_back({{"cx", finite_or_zero(e.cx)}, {"cy", finite_or_zero(e.cy)}, {"width", finite_or_zero(e.width)},
+                        {"height", finite_or_zero(e.height)}, {"angle_deg", finite_or_zero(e.angle_deg)},
+                        {"confidence", finite_or_zero(e.confidence)}});
   return {{"image", image.path.filename().string()},
           {"path", image.path.string()},
           {"width", image.width},
           {"height", image.height},
           {"detect_ms", image.detect_ms},
           {"segments", std::move(segments)},
-          {"field_boundary", std::move(boundary)}};
+          {"field_boundary", std::move(boundary)},
+          {"markings", std::move(markings)},
+          {"intersections", std::move(intersections)},
+          {"ellipses", std::move(ellipses)}};
 }
 
 nlohmann::ordered_json detections_json(std::span<const ImageDetections> images, std::span<const FailedImage> failed) {

@@ -38,6 +38,16 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
                    return segments->size();
                  }});
 
+  // The stripes stage on (stripes.hpp): what checking every marking across its width adds.
+  DetectorParams striped = params;
+  striped.stripes = true;
+  auto ours_stripes = std::make_shared<LineDetector>(striped, thresholds);
+  out.push_back({"fieldlines+stripes", "the same with the stripes stage (profiles across every marking)",
+                 [ours_stripes, segments](const cv::Mat& bgr) {
+                   ours_stripes->detect(bgr, *segments);
+                   return segments->size();
+                 }});
+
   auto ed = cv::ximgproc::createEdgeDrawing();
   auto ed_state = std::make_shared<GreyLines>();
   out.push_back({"edlines", "OpenCV ximgproc EdgeDrawing, EDLines (detectEdges + detectLines)",

@@ -16,14 +16,16 @@
 namespace fieldlines::peers {
 
 struct TimedDetector {
-  std::string name;  // "fieldlines", "edlines", "fld", "lsd", "gradients", "floor"
+  std::string name;  // "fieldlines", "fieldlines+light", "fieldlines+stripes", "edlines", "fld", "lsd",
+                     // "gradients", "floor"
   std::string what;  // one line for tables and --help
   // Runs on a BGR image and returns the number of segments found. Owns its buffers and reuses
   // them between calls, so repeated calls measure the steady state.
   std::function<std::size_t(const cv::Mat& bgr)> run;
 };
 
-// In this order: ours (detect + classify), OpenCV's EdgeDrawing in EDLines mode (detectEdges +
+// In this order: ours (detect + classify), ours with the light adaptation, ours with the
+// stripes, OpenCV's EdgeDrawing in EDLines mode (detectEdges +
 // detectLines, default parameters), FastLineDetector and LSD (default parameters), our gradient
 // stage alone (LineDetector::compute_gradients), and the floor every gradient-based detector
 // pays: cvtColor + 5x5 Gaussian + Sobel x and y (16-bit).

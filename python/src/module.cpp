@@ -82,7 +82,33 @@ std::unique_lock<std::mutex> lock_without_gil(std::mutex& m) {
 class Detector {
  public:
   explicit Detector(ThresholdsFile config)
-      : config_(std::move(config)), detector_(config_.detector, config_.thresholds) {}
+      : config_(std::move(config)), detector_(config_.detector, config_.thresholds) {
+    find_boundary_with_features();
+  }
+
+  // The field features of the last detect(), as `fieldlines detect --json` writes them.
+  py::dict features() {
+    const auto lock = lock_without_gil(mutex_);
+    const FieldFeatures& f = detector_.features();
+    py::list markings, intersections, ellipses, boundary;
+    for (const Marking& m : f.markings)
+      markings.append(py::dict(py::arg("x0") = m.x0, py::arg("y0") = m.y0, py::arg("x1") = m.x1, py::arg("y1") = m.y1,
+                               py::arg("width") = m.width));
+    for (const Intersection& j : f.intersections) {
+      py::list rays;
+      for (int k = 0; k < j.num_rays && k < 4; ++k) rays.append(j.heading_rays[static_cast<std::size_t>(k)]);
+      intersections.append(py::dict(py::arg("x") = j.x, py::arg("y") = j.y, py::arg("type") = to_string(j.type),
+                                    py::arg("num_rays") = j.num_rays, py::arg("heading_rays") = rays,
+                                    py::arg("confidence") = j.confidence));
+    }
+    for (const MarkingEllipse& e : f.ellipses)
+      ellipses.append(py::dict(py::arg("cx") = e.cx, py::arg("cy") = e.cy, py::arg("width") = e.width,
+                               py::arg("height") = e.height, py::arg("angle_deg") = e.angle_deg,
+                               py::arg("confidence") = e.confidence));
+    for (const FieldBoundary::Point& p : f.field_boundary.points) boundary.append(py::make_tuple(p.x, p.y));
+    return py::dict(py::arg("markings") = markings, py::arg("intersections") = intersections,
+                    py::arg("ellipses") = ellipses, py::arg("field_boundary") = boundary);
+  }
 
   py::array detect(const py::array& image) {
     const cv::Mat view = image_view(image, "image");  // no copy; `image` outlives the call
@@ -123,9 +149,16 @@ class Detector {
       detector_ = LineDetector(config.detector, config.thresholds);
     }
     config_ = std::move(config);
+    find_boundary_with_features();
   }
 
  private:
+  // features() reports the boundary whenever a feature stage is on, as detect --json does.
+  void find_boundary_with_features() {
+    const DetectorParams& p = config_.detector;
+    detector_.set_find_field_boundary(p.stripes || p.intersections || p.centre_circle);
+  }
+
   std::mutex mutex_;
   ThresholdsFile config_;
   LineDetector detector_;
@@ -237,6 +270,13 @@ buffers between calls.)")
 Returns a 1-D structured array of SEGMENT_DTYPE: x0, y0, x1, y1 (pixels), saliency (validated
 pixels), grad_x, grad_y (3 x float32, R,G,B; grad_y image-down), label (int code into LABELS).
 A C-contiguous image (or a crop of one) is read without a copy; the GIL is released meanwhile.)")
+      .def("features", &Detector::features,
+           R"(The field features of the last detect(), as `fieldlines detect --json` names them
+(ros-sports soccer_vision_2d_msgs): {"markings": [{x0, y0, x1, y1, width}], "intersections":
+[{x, y, type ("L", "T" or "X"), num_rays, heading_rays (radians ascending in [0, 2pi), 0 along
++x, pi/2 image down), confidence}], "ellipses": [{cx, cy, width, height, angle_deg, confidence}],
+"field_boundary": [(x, y), ...]}. Each is empty unless its stage is on in the thresholds'
+"detector" (stripes, intersections, centre_circle; the boundary with any of them).)")
       .def_property("thresholds", &Detector::thresholds, &Detector::set_thresholds,
                     "The detector's thresholds file as a dict; assign a dict to change it.")
       .def("_time_detect", &Detector::time_detect, py::arg("image"), py::arg("repeat") = 1,

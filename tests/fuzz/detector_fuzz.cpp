@@ -1,4 +1,4 @@
-// Fuzzes LineDetector::detect with small images of any size, channel count and depth.
+// Fuzzes LineDetector::detect, with and without the field feature stages, with small images of any size, channel count and depth.
 // Layout of the input: width, height, type selector, then pixel bytes (repeated to fill).
 #include <cstddef>
 #include <cstdint>
@@ -38,6 +38,43 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         __builtin_trap();
       if (std::memcmp(&s.x0, &fresh[i].x0, sizeof(float)) != 0 || s.saliency != fresh[i].saliency) __builtin_trap();
     }
+    // Every feature stage (stripes, intersections, centre circle) on the same frame: finite
+    // markings of positive width no wider than the frame is high, sane junctions and ellipses,
+    // and no state leaking between calls either.
+    static const fieldlines::DetectorParams kStripes = [] {
+      fieldlines::DetectorParams p;
+      p.stripes = p.intersections = p.centre_circle = true;
+      return p;
+    }();
+    static fieldlines::LineDetector striped(kStripes);
+    const std::vector<fieldlines::Segment> labelled = striped.detect(image);
+    const std::vector<fieldlines::Marking> markings = striped.features().markings;
+    fieldlines::LineDetector fresh_striped(kStripes);
+    const std::vector<fieldlines::Segment> fresh_labelled = fresh_striped.detect(image);
+    if (labelled.size() != fresh_labelled.size() || markings.size() != fresh_striped.features().markings.size())
+      __builtin_trap();
+    for (std::size_t i = 0; i < labelled.size(); ++i)
+      if (labelled[i].label != fresh_labelled[i].label) __builtin_trap();
+    for (const fieldlines::Marking& m : markings)
+      if (!std::isfinite(m.x0) || !std::isfinite(m.y0) || !std::isfinite(m.x1) || !std::isfinite(m.y1) ||
+          !(m.width > 0) || m.width > float(image.rows))
+        __builtin_trap();
+    const fieldlines::FieldFeatures& f = striped.features();
+    if (f.intersections.size() != fresh_striped.features().intersections.size() ||
+        f.ellipses.size() != fresh_striped.features().ellipses.size() || f.ellipses.size() > 1)
+      __builtin_trap();
+    for (const fieldlines::Intersection& j : f.intersections) {
+      if (!std::isfinite(j.x) || !std::isfinite(j.y) || j.num_rays < 2 || j.num_rays > 4 || !(j.confidence >= 0) ||
+          j.confidence > 1)
+        __builtin_trap();
+      for (int k = 0; k < j.num_rays; ++k)
+        if (!(j.heading_rays[k] >= 0) || !(j.heading_rays[k] < 6.2832f) || (k > 0 && j.heading_rays[k] < j.heading_rays[k - 1]))
+          __builtin_trap();
+    }
+    for (const fieldlines::MarkingEllipse& e : f.ellipses)
+      if (!std::isfinite(e.cx) || !std::isfinite(e.cy) || !(e.width > 0) || !(e.height > 0) || !std::isfinite(e.width) ||
+          !std::isfinite(e.height) || !std::isfinite(e.angle_deg) || !(e.confidence > 0) || e.confidence > 1)
+        __builtin_trap();
   } catch (const fieldlines::Error&) {
     // Unsupported types are reported, not crashed on.
   }

@@ -101,6 +101,45 @@ void draw_field_boundary(cv::Mat& canvas, std::span<const FieldBoundary::Point> 
   }
 }
 
+void draw_field_features(cv::Mat& canvas, const FieldFeatures& features, const OverlayParams& params) {
+  draw_field_boundary(canvas, features.field_boundary.points, params);
+  const int thickness =
+      params.thickness > 0 ? params.thickness : std::max(1, std::min(canvas.cols, canvas.rows) / 240);
+  const cv::Scalar colour = bgr(palette::kFeature);
+  const int outline = thickness + 2 * params.outline_px;
+  // Outline first, colour on top, as every other overlay element.
+  const auto stroke = [&](auto&& draw) {
+    if (params.outline_px > 0) draw(params.outline_colour, outline);
+    draw(colour, thickness);
+  };
+  for (const Marking& m : features.markings) {
+    if (!std::isfinite(m.x0) || !std::isfinite(m.y0) || !std::isfinite(m.x1) || !std::isfinite(m.y1)) continue;
+    stroke([&](const cv::Scalar& c, int t) {
+      cv::line(canvas, cv::Point2d(m.x0, m.y0), cv::Point2d(m.x1, m.y1), c, t, cv::LINE_AA);
+    });
+  }
+  for (const MarkingEllipse& e : features.ellipses) {
+    if (!std::isfinite(e.cx) || !std::isfinite(e.cy) || !(e.width > 0) || !(e.height > 0)) continue;
+    const cv::RotatedRect box(cv::Point2f(e.cx, e.cy), cv::Size2f(e.width, e.height), e.angle_deg);
+    stroke([&](const cv::Scalar& c, int t) { cv::ellipse(canvas, box, c, t, cv::LINE_AA); });
+  }
+  const double ray_px = 6.0 * thickness + 12, ring_px = 2.0 * thickness + 4;
+  for (const Intersection& j : features.intersections) {
+    if (!std::isfinite(j.x) || !std::isfinite(j.y)) continue;
+    const cv::Point2d centre(j.x, j.y);
+    stroke([&](const cv::Scalar& c, int t) {
+      cv::circle(canvas, centre, static_cast<int>(ring_px), c, t, cv::LINE_AA);
+      for (int k = 0; k < std::clamp(j.num_rays, 0, 4); ++k) {
+        const double h = j.heading_rays[static_cast<std::size_t>(k)];
+        cv::line(canvas, centre + ring_px * cv::Point2d(std::cos(h), std::sin(h)),
+                 centre + ray_px * cv::Point2d(std::cos(h), std::sin(h)), c, t, cv::LINE_AA);
+      }
+      cv::putText(canvas, to_string(j.type), centre + cv::Point2d(ring_px + 2, -ring_px - 2), cv::FONT_HERSHEY_SIMPLEX,
+                  0.4 + 0.1 * thickness, c, t, cv::LINE_AA);
+    });
+  }
+}
+
 cv::Mat draw_overlay(const cv::Mat& image, std::span<const Segment> segments, const OverlayParams& params) {
   cv::Mat canvas = to_bgr8(image).clone();
   const int thickness =

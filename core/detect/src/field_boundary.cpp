@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "features/field_pixel.hpp"
 #include "fieldlines/detect/light.hpp"
 
 namespace fieldlines {
@@ -56,19 +57,7 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   out.clear();
   out.image_height = bgr8.rows;
   if (bgr8.empty() || bgr8.type() != CV_8UC3) return;
-  const float field_sum = std::max(field[0] + field[1] + field[2], 1.f);
-  const float field_r = field[0] / field_sum, field_g = field[1] / field_sum;
-  const auto is_field = [&](const std::uint8_t* p) {
-    const float sum = float(p[0]) + p[1] + p[2];
-    if (sum < params.min_brightness * field_sum || sum > params.max_brightness * field_sum) return false;
-    return std::abs(p[2] / sum - field_r) + std::abs(p[1] / sum - field_g) <= params.chroma_tolerance;
-  };
-  // Paint: brighter than the carpet and nearly grey.
-  const auto is_paint = [&](const std::uint8_t* p) {
-    const float sum = float(p[0]) + p[1] + p[2];
-    return sum >= params.paint_brightness * field_sum &&
-           std::abs(p[2] / sum - 1.f / 3) + std::abs(p[1] / sum - 1.f / 3) <= params.paint_chroma;
-  };
+  const FieldPixel pixel(field, params);
   const int paint_cap = static_cast<int>(std::lround(params.max_paint_fraction * bgr8.rows));
   const int column_step = std::max(params.column_step, 1), row_step = std::max(params.row_step, 1);
   const int gap = std::max(params.min_gap_px, static_cast<int>(std::lround(params.gap_fraction * bgr8.rows)));
@@ -78,10 +67,10 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
     int top = -1, since_green = 0, paint = 0;
     for (int y = bgr8.rows - 1 - row_step / 2; y >= 0; y -= row_step) {
       const std::uint8_t* p = bgr8.ptr<std::uint8_t>(y) + 3 * x;
-      if (is_field(p)) {
+      if (pixel.field(p)) {
         top = y;
         since_green = paint = 0;
-      } else if (top >= 0 && is_paint(p) && (paint += row_step) <= paint_cap) {
+      } else if (top >= 0 && pixel.paint(p) && (paint += row_step) <= paint_cap) {
         // A painted line, however wide near the camera, is part of the field: it neither
         // ends the field nor raises its top.
       } else if (top >= 0 && (since_green += row_step) > gap) {

@@ -62,13 +62,18 @@ void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, std::vec
     anchor_threshold /= 2;
   }
 
+  draw_and_validate(bgr, params, params.min_line_length, out);
+}
+
+void ElsedEngine::draw_and_validate(const cv::Mat& bgr, const DetectorParams& params, int min_line_length,
+                                    std::vector<Segment>& out) {
   elsed::DrawerParams& dp = drawer_params_;
   dp.line_fit_error = params.line_fit_error;
   dp.px_to_segment_dist = params.px_to_segment_dist;
-  dp.min_line_length = params.min_line_length;
+  dp.min_line_length = min_line_length;
   dp.treat_junctions = params.treat_junctions;
   dp.junction_sizes = params.junction_sizes;  // copy-assignment: reuses the capacity
-  drawer_.reset(maps_, dp);  // the gradient pass has left every mark Free
+  drawer_.reset(maps_, dp);  // run()'s gradient pass has left every mark Free; redraw() clears them
   const int w = maps_.width;
   for (const Pixel& a : anchors_) {
     if (mark_of(maps_.state[a.y * w + a.x]) != Mark::Free) continue;  // already part of an edge
@@ -80,6 +85,17 @@ void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, std::vec
   for (const elsed::LineModel& seg : drawer_.segments()) {
     if (elsed::validate_segment(seg, drawer_.chain(), maps_, bgr, vp, s)) out.push_back(s);
   }
+}
+
+void ElsedEngine::redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,
+                         std::vector<Segment>& out) {
+  out.clear();
+  if (maps_.width != bgr.cols || maps_.height != bgr.rows) return;  // run() has not seen this frame
+  // The first drawing's marks would stop the new one at every pixel it owns: back to Free,
+  // keeping each pixel's edge direction.
+  for (elsed::PixelState& st : maps_.state) st = elsed::with_mark(st, Mark::Free);
+  find_anchors(scan_interval, params.anchor_threshold);
+  draw_and_validate(bgr, params, min_line_length, out);
 }
 
 }  // namespace fieldlines

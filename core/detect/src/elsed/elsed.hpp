@@ -22,8 +22,14 @@ class ElsedEngine {
   // The first stage alone (what run() starts with): fills gradients().
   void compute_gradients(const cv::Mat& bgr, const DetectorParams& params);
   const elsed::GradientMaps& gradients() const { return maps_; }
+  // After run() on the same frame: draws it again from anchors every `scan_interval` px, keeping
+  // segments from `min_line_length` px (the short pieces of curves), into `out` (cleared first).
+  void redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,
+              std::vector<Segment>& out);
 
  private:
+  void draw_and_validate(const cv::Mat& bgr, const DetectorParams& params, int min_line_length,
+                         std::vector<Segment>& out);
   void find_anchors(int scan_interval, int threshold);
 
   // One pass per thread (each its own scratch rows), all configured alike; passes_[0] runs on

@@ -6,6 +6,7 @@
 
 #include "fieldlines/data/palette.hpp"
 #include "fieldlines/detect/field_boundary.hpp"
+#include "fieldlines/detect/field_features.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
@@ -38,6 +39,11 @@ cv::Scalar label_colour(Label label, const OverlayParams& params = {});
 // that it never hides a segment under it, over the same dark outline.
 void draw_field_boundary(cv::Mat& canvas, std::span<const FieldBoundary::Point> boundary,
                          const OverlayParams& params = {});
+
+// The field features (fieldlines/detect/field_features.hpp) over the same dark outline: the
+// markings' centre lines, the ellipses, each intersection as a ring with its rays and its type
+// letter, and the field boundary (draw_field_boundary).
+void draw_field_features(cv::Mat& canvas, const FieldFeatures& features, const OverlayParams& params = {});
 
 // Returns an 8-bit BGR copy of `image` (any type load_image accepts) with the segments drawn.
 cv::Mat draw_overlay(const cv::Mat& image, std::span<const Segment> segments,

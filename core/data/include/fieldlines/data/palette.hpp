@@ -35,6 +35,7 @@ inline constexpr Rgb kOutline{10, 10, 10};      // under every segment
 // picture itself: a hue no label uses, far from turf (Delta-E ~69) and visible on white (~51).
 inline constexpr Rgb kMissedPaint{0, 255, 255};  // cyan
 inline constexpr Rgb kFieldBoundary{255, 255, 255};  // white over the outline: where the green ends
+inline constexpr Rgb kFeature{255, 150, 0};     // orange: centre lines, junctions, the circle (detect --draw)
 inline constexpr float kOutlineExtra = 3;       // outline width = line width + this, pixels
 
 constexpr Rgb label_rgb(Label label) {

@@ -15,6 +15,7 @@
 #include "fieldlines/detect/classifier.hpp"
 #include "fieldlines/detect/detector_params.hpp"
 #include "fieldlines/detect/field_boundary.hpp"
+#include "fieldlines/detect/field_features.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
@@ -50,13 +51,18 @@ class LineDetector {
   // when the thresholds keep markings below it; empty otherwise, or when the frame has no field.
   void set_find_field_boundary(bool on) { find_boundary_ = on; }
   const FieldBoundary& field_boundary() const;
-  // The field colour of the last detect() (light.hpp), measured once when the light adaptation
-  // or the field boundary needed it; empty otherwise, or when the frame shows no field.
+  // The field colour of the last detect() (light.hpp), measured once when the light adaptation,
+  // the field boundary or the stripes needed it; empty otherwise, or when the frame shows no field.
   const std::optional<Rgb>& field_colour() const;
+  // The field features of the last detect() (field_features.hpp): the stripes' centre lines
+  // when DetectorParams::stripes is on (stripes.hpp), the junctions when intersections is on
+  // (intersections.hpp), the field boundary as field_boundary() has it; empty otherwise.
+  const FieldFeatures& features() const;
 
  private:
   struct Impl;
   const cv::Mat* normalise(const cv::Mat& image);  // to 8-bit BGR; nullptr if smaller than 3x3
+  void find_pieces(const cv::Mat& bgr, bool gain);  // junctions and circle (detector.cpp)
   DetectorParams params_;
   Thresholds thresholds_;
   bool find_boundary_ = false;

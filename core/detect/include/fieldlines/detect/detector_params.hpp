@@ -31,6 +31,22 @@ struct DetectorParams {
   // keep one). Speed only: the results are the same bits for any count, so it is not written
   // into thresholds or project files. Workers start on the first detect.
   int threads = 1;
+  // Painted lines as stripes (stripes.hpp): Marking segments that are not part of a stripe
+  // become None, and the stripes' centre lines are LineDetector::features().markings. Off by
+  // default: the reference reproduction has no such stage.
+  bool stripes = false;
+  int stripe_samples = 5;
+  double stripe_max_width = 0.15;
+  bool stripe_require_twin = false;
+  // L, T and X junctions of the stripes' centre lines (intersections.hpp). Off by default like
+  // the stripes; on, it runs the stripes stage too (its input).
+  bool intersections = false;
+  double intersection_min_angle = 15;  // far corners look this acute in perspective
+  double intersection_reach = 1.5;
+  // The centre circle from short stripe pieces (centre_circle.hpp); off by default. On, or with
+  // intersections on, the frame is drawn a second time for pieces from piece_length px.
+  bool centre_circle = false;
+  int piece_length = 10;
   bool operator==(const DetectorParams&) const = default;
 };
 
@@ -56,7 +72,7 @@ struct ParamSpec {
   bool in_files = true;     // written into and read from thresholds and project files
 };
 
-inline constexpr std::array<ParamSpec, 13> kDetectorParamSpecs{{
+inline constexpr std::array<ParamSpec, 22> kDetectorParamSpecs{{
     {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
      .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
     {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
@@ -84,6 +100,25 @@ inline constexpr std::array<ParamSpec, 13> kDetectorParamSpecs{{
      .help = "jump lengths tried at a junction"},
     {.name = "threads", .member = &DetectorParams::threads, .range = {1, 64},
      .help = "threads of the gradient pass (speed only)", .in_files = false},
+    {.name = "stripes", .member = &DetectorParams::stripes,
+     .help = "keep only markings that are stripes (turf, paint, turf) and measure their centre lines"},
+    {.name = "stripe_samples", .member = &DetectorParams::stripe_samples, .range = {1, 32},
+     .help = "profiles across each marking candidate", .slider = {1, 15}},
+    {.name = "stripe_max_width", .member = &DetectorParams::stripe_max_width, .range = {0, 1, true},
+     .help = "widest stripe on the bottom row, as a share of the image height (a quarter of it on top)",
+     .slider = {0.02, 0.5}},
+    {.name = "stripe_require_twin", .member = &DetectorParams::stripe_require_twin,
+     .help = "a stripe must have both edges detected; otherwise one edge with its profile suffices"},
+    {.name = "intersections", .member = &DetectorParams::intersections,
+     .help = "find L, T and X junctions of the stripes' centre lines (runs the stripes stage too)"},
+    {.name = "intersection_min_angle", .member = &DetectorParams::intersection_min_angle, .range = {0, 90, true},
+     .unit = "deg", .help = "two centre lines meet only at more than this angle", .slider = {5, 80}},
+    {.name = "intersection_reach", .member = &DetectorParams::intersection_reach, .range = {0, 20},
+     .help = "how far a line may end short of a crossing, in line widths (plus 4 px)", .slider = {0, 6}},
+    {.name = "centre_circle", .member = &DetectorParams::centre_circle,
+     .help = "fit the centre circle to short stripe pieces of a second drawing (runs the stripes stage too)"},
+    {.name = "piece_length", .member = &DetectorParams::piece_length, .range = {3, 10000},
+     .unit = "px", .help = "shortest piece of the second drawing (intersections, centre circle)", .slider = {5, 60}},
 }};
 
 // The spec named `name`, or nullptr.

@@ -1,0 +1,50 @@
+#pragma once
+// The centre circle as an image ellipse, from short stripe pieces that chain smoothly.
+//
+// The detector's minimum segment length (40 px in the method's configuration) leaves no straight
+// piece on a curve that bends quickly in the image. With `centre_circle` on, the frame is drawn
+// a second time from the same gradients (anchors every 4 px, pieces from `piece_length`
+// px), and those pieces that the classifier calls markings and the stripes check keeps
+// (stripes.hpp) are the arc candidates. Two pieces chain when an end of one lies within two line
+// widths plus 6 px of an end of the other and their directions differ by 3 to 40 degrees (a
+// straight line broken in two does not bend; a corner bends more). The seed is one chain of at
+// least three pieces or two chains of at least two (a flat ellipse's far and near arcs do not
+// chain round its sharply bending ends), fitted with a conic (algebraic least squares under
+// a + c = 1, which holds for every ellipse; three points per piece, centred and scaled), then
+// again over a few rounds without the points off the last fit (a straight piece linked into a
+// chain pulls the first fit away). It is a circle's image when the conic is an ellipse (axes at
+// least 4 px, at most 12:1), its points lie on it (the median Sampson distance at most half the
+// line width, at least 2.5 px: a piece is a chord, its middle inside the curve; three quarters
+// within twice that), and they cover at least 150 degrees of it (seen from its centre, in its own
+// axes). The best seed wins; every other chain joins it when the fit of both still passes and
+// covers more of the turn (the circle cut by the halfway line or a robot is several chains). At
+// most one ellipse per frame (there is one centre circle); its confidence is the share of the
+// turn its points cover.
+//
+// The fit is written out (a 5x5 solve on the stack) rather than cv::fitEllipse, which allocates
+// per call: warm detect allocates nothing with this stage on.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "fieldlines/detect/field_features.hpp"
+
+namespace fieldlines {
+
+// Scratch reused between frames; its contents mean nothing to a caller.
+struct CircleWorkspace {
+  struct Point {
+    float x = 0, y = 0;
+    std::uint8_t inlier = 0;
+  };
+  std::vector<int> parent;         // union-find over the pieces
+  std::vector<int> chain_size;     // pieces per chain root
+  std::vector<Point> points;       // samples of the chain being fitted
+  std::vector<std::uint8_t> on_ellipse;  // per piece: part of the ellipse found
+};
+
+// Fits the centre circle to `pieces` (stripe centre lines of short segments) into `out`
+// (cleared first: empty or one ellipse); `work.on_ellipse[i]` tells whether piece i is on it.
+void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, std::vector<MarkingEllipse>& out);
+
+}  // namespace fieldlines

@@ -1,0 +1,68 @@
+#pragma once
+// Painted lines as stripes. A colour transition at one edge cannot tell a painted line from a
+// wall's foot, a goal post or a robot's white bar; geometry can: a painted line is a stripe,
+// turf, then paint of a plausible width, then turf again.
+//
+// Each segment labelled Marking is checked by profiles across it at `stripe_samples` points
+// along its length, read in the 8-bit BGR frame from outside its edge into its bright side (the
+// side its colour gradient points to; the image decides when the gradients are zero):
+//  - turf in the frame's field colour (features/field_pixel.hpp) outside the edge;
+//  - paint: a peak brighter than the field colour by a tenth;
+//  - turf again past the paint, within the largest plausible width: in the field colour or in
+//    the colour of the turf outside (far turf in haze misses the frame's colour), and darker
+//    than half-way to the paint. The largest plausible width grows linearly towards the image
+//    bottom, where the field is nearest: `stripe_max_width` times the image height on the
+//    bottom row, a quarter of that on the top rows;
+//  - between paint and turf on either side only a fade (at most 10 px, for motion blur, never
+//    darker than the turf): a robot's dark body beside its white bar is no turf.
+// The width is the distance between the two half-way crossings of brightness (paint to turf),
+// so it does not depend on where in the edge's blur the segment was fitted. A profile that
+// leaves the image through its bottom or sides while still in paint counts neither way (a line
+// near the camera running out of the frame); one leaving through the top is no stripe (above
+// the field are walls). A segment is a stripe when at least one profile is, and no fewer are
+// than are not.
+//
+// A stripe edge whose opposite-sign twin is a stripe too (parallel within 5 degrees,
+// overlapping along its length, at about the measured width on its paint side) is merged with
+// it into one Marking: the line half-way between them over the union of their lengths, and
+// their mean measured width. A stripe without a twin (its second edge was not detected: too
+// short, broken by a robot, below the detector's minimum length) is still a marking, its
+// centre line the edge shifted by the measured centre offset, unless `stripe_require_twin` is
+// set (measured in docs/detector.md: requiring twins costs recall and buys no precision).
+// Every other Marking segment, and every one when the frame shows no field, becomes None, so
+// every consumer of labels sees the check. Buffers are the caller's: no allocation once warm.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <opencv2/core/mat.hpp>
+
+#include "fieldlines/detect/detector_params.hpp"
+#include "fieldlines/detect/field_features.hpp"
+#include "fieldlines/detect/segment.hpp"
+
+namespace fieldlines {
+
+// Scratch reused between frames; its contents mean nothing to a caller.
+struct StripeWorkspace {
+  struct Candidate {
+    std::size_t segment = 0;     // index into the segments
+    float ux = 0, uy = 0;        // unit direction, x0,y0 -> x1,y1
+    float sx = 0, sy = 0;        // unit normal towards the paint
+    float offset = 0, width = 0; // median centre offset along (sx, sy) and median width, px
+    bool paired = false;
+  };
+  std::vector<Candidate> candidates;
+  std::vector<float> brightness;       // one profile: R + G + B per step
+  std::vector<std::uint8_t> is_field;  // one profile: field colour or not per step
+  std::vector<const std::uint8_t*> pixels;  // one profile: the pixel of each step
+};
+
+// `bgr8`: the frame the segments were detected in (8-bit BGR; anything else keeps no marking).
+// `field`: the frame's field colour (LineDetector measures it); empty: no turf anywhere.
+// Relabels `segments` in place and writes one Marking per stripe into `out` (cleared first).
+void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<Segment> segments,
+                  const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out);
+
+}  // namespace fieldlines

@@ -1,0 +1,39 @@
+#pragma once
+// Whether a pixel shows the field or paint, against the frame's own field colour (light.hpp).
+// One rule for the field boundary and the stripes: a loose "green dominates" test also passes
+// grey walls under a greenish camera, so a field pixel must match the field's chromaticity and
+// lie within a brightness range of it; paint is brighter than the field and nearly grey.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "fieldlines/detect/field_boundary.hpp"
+#include "fieldlines/detect/segment.hpp"
+
+namespace fieldlines {
+
+class FieldPixel {
+ public:
+  FieldPixel(const Rgb& field, const FieldBoundaryParams& params)
+      : p_(params), sum_(std::max(field[0] + field[1] + field[2], 1.f)), r_(field[0] / sum_), g_(field[1] / sum_) {}
+
+  float field_sum() const { return sum_; }  // R + G + B of the field colour (at least 1)
+
+  // `bgr` points at one 8-bit B, G, R pixel.
+  bool field(const std::uint8_t* bgr) const {
+    const float sum = float(bgr[0]) + bgr[1] + bgr[2];
+    if (sum < p_.min_brightness * sum_ || sum > p_.max_brightness * sum_) return false;
+    return std::abs(bgr[2] / sum - r_) + std::abs(bgr[1] / sum - g_) <= p_.chroma_tolerance;
+  }
+  bool paint(const std::uint8_t* bgr) const {
+    const float sum = float(bgr[0]) + bgr[1] + bgr[2];
+    return sum >= p_.paint_brightness * sum_ &&
+           std::abs(bgr[2] / sum - 1.f / 3) + std::abs(bgr[1] / sum - 1.f / 3) <= p_.paint_chroma;
+  }
+
+ private:
+  FieldBoundaryParams p_;
+  float sum_, r_, g_;
+};
+
+}  // namespace fieldlines

@@ -1,0 +1,245 @@
+#include "fieldlines/detect/stripes.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "field_pixel.hpp"
+
+namespace fieldlines {
+namespace {
+
+using Candidate = StripeWorkspace::Candidate;
+
+constexpr int kOuterPx = 2;      // the profile starts this far outside the edge, beyond its blur
+constexpr int kMaxBlurPx = 10;   // paint fades into turf over at most this many px (motion blur)...
+constexpr float kBlurShade = 0.85f;  // ...none darker than this share of the field colour
+constexpr float kPaintContrast = 1.1f;   // the paint's peak R + G + B over the field colour's
+constexpr float kMinWidthPx = 0.5f;
+constexpr float kTopWidthShare = 0.25f;  // the widest stripe on the top row, as a share of the bottom's
+constexpr float kTwinCos = 0.9962f;      // cos(5 degrees): twins are this parallel...
+constexpr float kTwinWidthShare = 0.35f; // ...their distance within this share of the width...
+constexpr float kTwinMinSlackPx = 2;     // ...or this many pixels, whichever is more
+
+// A profile that leaves the image through its bottom or sides while still in paint is cut: it
+// says nothing either way (a line near the camera, running out of the frame). One leaving
+// through the top says no: above the field are walls, not paint.
+enum class Verdict { Stripe, No, Cut };
+struct Profile {
+  Verdict verdict = Verdict::No;
+  float width = 0, offset = 0;
+};
+
+float brightness(const std::uint8_t* p) { return float(p[0]) + p[1] + p[2]; }
+
+// Whether two pixels show the same turf: chromaticity within the field pixel rule's tolerance,
+// brightness within a fifth.
+bool same_turf(const std::uint8_t* a, const std::uint8_t* b) {
+  const float sa = std::max(brightness(a), 1.f), sb = std::max(brightness(b), 1.f);
+  if (sb < 0.8f * sa || sb > 1.2f * sa) return false;
+  return std::abs(a[2] / sa - b[2] / sb) + std::abs(a[1] / sa - b[1] / sb) <= FieldBoundaryParams{}.chroma_tolerance;
+}
+
+// Where between steps i and i + 1 the brightness crosses `level`, in steps.
+float crossing(const std::vector<float>& b, int i, float level) {
+  const float d = b[i + 1] - b[i];
+  return d != 0.f ? float(i) + (level - b[i]) / d : float(i) + 0.5f;
+}
+
+// One profile from (px, py) along the unit vector (sx, sy) towards the paint. Step i reads the
+// pixel nearest to (px, py) + (i - back) (sx, sy), back = kOuterPx + kMaxBlurPx; the profile
+// ends at the image border.
+Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, float py, float sx, float sy,
+                        float max_width, StripeWorkspace& work) {
+  constexpr int back = kOuterPx + kMaxBlurPx;
+  const int steps = back + static_cast<int>(std::ceil(max_width)) + kMaxBlurPx + 2;
+  work.brightness.resize(static_cast<std::size_t>(steps));
+  work.is_field.resize(static_cast<std::size_t>(steps));
+  work.pixels.resize(static_cast<std::size_t>(steps));
+  int valid = 0;
+  bool cut = false;
+  for (; valid < steps; ++valid) {
+    const float t = float(valid - back);
+    const long x = std::lround(px + t * sx), y = std::lround(py + t * sy);
+    if (x < 0 || y < 0 || x >= bgr.cols || y >= bgr.rows) {
+      cut = y >= 0 && valid > back;
+      break;
+    }
+    const std::uint8_t* p = bgr.ptr<std::uint8_t>(static_cast<int>(y)) + 3 * x;
+    work.brightness[static_cast<std::size_t>(valid)] = brightness(p);
+    work.is_field[static_cast<std::size_t>(valid)] = pixel.field(p);
+    work.pixels[static_cast<std::size_t>(valid)] = p;
+  }
+  const std::vector<float>& b = work.brightness;
+  const std::vector<std::uint8_t>& turf = work.is_field;
+  // Turf outside the edge, in the frame's field colour.
+  int outside = std::min(back, valid - 1);
+  while (outside >= 0 && !turf[outside]) --outside;
+  if (outside < 0) return {};
+  // Turf returns on the paint side: the first pixel past the edge in the field colour or in the
+  // colour of the turf outside (far turf in haze or in another light misses the frame's
+  // colour), and darker than half-way to the paint (blurred paint can pass the colour test).
+  // Without it the bright side is a wall, a board or a post, not paint. The paint's peak lies
+  // between the edge (give or take its blur) and that turf.
+  const std::uint8_t* const outside_pixel = work.pixels[static_cast<std::size_t>(outside)];
+  int far_turf = back, peak = std::max(back - kOuterPx, outside + 1);
+  float level = 0;
+  for (;;) {
+    do ++far_turf;
+    while (far_turf < valid && !turf[far_turf] && !same_turf(outside_pixel, work.pixels[far_turf]));
+    if (far_turf >= valid) return {cut ? Verdict::Cut : Verdict::No};
+    for (int i = peak + 1; i <= far_turf; ++i)
+      if (b[i] > b[peak]) peak = i;
+    if (peak == far_turf) continue;  // brighter than all before it: faint paint, not turf
+    // Half-way between the paint and the turf on either side, so blur widens nothing.
+    level = 0.5f * (b[peak] + 0.5f * (b[outside] + b[far_turf]));
+    if (b[far_turf] < level) break;
+  }
+  if (turf[peak] || b[peak] < kPaintContrast * pixel.field_sum()) return {};
+  int near_turf = peak - 1;
+  while (near_turf >= 0 && !(turf[near_turf] && b[near_turf] < level)) --near_turf;
+  if (near_turf < 0) return {};
+  int lo = peak, hi = peak;
+  while (b[lo - 1] >= level) --lo;  // stops after near_turf, stays below it
+  while (b[hi + 1] >= level) ++hi;  // stops before far_turf, stays above it
+  // Between paint and turf only blur: a short fade, never darker than turf. A robot's black
+  // body beside its white bar, or a dark gap before the turf, says the bright part is no paint.
+  const auto fades = [&](int from, int to) {
+    if (to - from > kMaxBlurPx) return false;
+    for (int i = from; i < to; ++i)
+      if (b[i] < kBlurShade * pixel.field_sum()) return false;
+    return true;
+  };
+  if (!fades(near_turf + 1, lo) || !fades(hi + 1, far_turf)) return {};
+  const float near_edge = crossing(b, lo - 1, level), far_edge = crossing(b, hi, level);
+  const float width = far_edge - near_edge;
+  if (width < kMinWidthPx || width > max_width) return {};
+  return {Verdict::Stripe, width, 0.5f * (near_edge + far_edge) - float(back)};
+}
+
+float median(std::array<float, 32>& v, int n) {
+  std::nth_element(v.begin(), v.begin() + n / 2, v.begin() + n);
+  return v[static_cast<std::size_t>(n / 2)];
+}
+
+// The candidate's paint side, profiles and medians; false when it is no stripe.
+bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segment& s, const DetectorParams& params,
+                       StripeWorkspace& work, Candidate& c) {
+  const float dx = s.x1 - s.x0, dy = s.y1 - s.y0, len = std::hypot(dx, dy);
+  if (!(len > 0.f)) return false;
+  c.ux = dx / len, c.uy = dy / len;
+  // The paint is on the side the colour gradient points to (brighter along it); the image
+  // decides when the gradients say nothing (a caller's own segments).
+  float nx = -c.uy, ny = c.ux, along = 0;
+  for (int ch = 0; ch < 3; ++ch) along += s.grad_x[ch] * nx + s.grad_y[ch] * ny;
+  if (along == 0.f) {
+    const float mx = 0.5f * (s.x0 + s.x1), my = 0.5f * (s.y0 + s.y1);
+    const auto at = [&](float t) {
+      const int x = std::clamp(static_cast<int>(std::lround(mx + t * nx)), 0, bgr.cols - 1);
+      const int y = std::clamp(static_cast<int>(std::lround(my + t * ny)), 0, bgr.rows - 1);
+      return brightness(bgr.ptr<std::uint8_t>(y) + 3 * x);
+    };
+    along = at(1.5f) - at(-1.5f);
+  }
+  if (along < 0) nx = -nx, ny = -ny;
+  c.sx = nx, c.sy = ny;
+  const int samples = std::clamp(params.stripe_samples, 1, 32);
+  const float bottom_width = static_cast<float>(params.stripe_max_width) * float(bgr.rows);
+  std::array<float, 32> widths{}, offsets{};
+  int stripes = 0, decided = 0;
+  for (int k = 0; k < samples; ++k) {
+    const float f = (float(k) + 0.5f) / float(samples);
+    const float px = s.x0 + f * dx, py = s.y0 + f * dy;
+    const float max_width = bottom_width * std::max(kTopWidthShare, py / float(bgr.rows));
+    const Profile p = measure_profile(bgr, pixel, px, py, nx, ny, max_width, work);
+    decided += p.verdict != Verdict::Cut;
+    if (p.verdict == Verdict::Stripe) {
+      widths[static_cast<std::size_t>(stripes)] = p.width;
+      offsets[static_cast<std::size_t>(stripes)] = p.offset;
+      ++stripes;
+    }
+  }
+  if (2 * stripes < decided || stripes == 0) return false;
+  c.width = median(widths, stripes);
+  c.offset = median(offsets, stripes);
+  return true;
+}
+
+Marking centre_of(const Segment& s, const Candidate& c) {
+  return {s.x0 + c.offset * c.sx, s.y0 + c.offset * c.sy, s.x1 + c.offset * c.sx, s.y1 + c.offset * c.sy, c.width};
+}
+
+// How far b's edge lies from a's along a's paint normal, when b is a's twin: parallel, its
+// paint facing a's, overlapping along a; negative otherwise.
+float twin_distance(const Segment& a, const Candidate& ca, const Segment& b, const Candidate& cb) {
+  if (std::abs(ca.ux * cb.ux + ca.uy * cb.uy) < kTwinCos) return -1;
+  if (ca.sx * cb.sx + ca.sy * cb.sy >= 0) return -1;  // the two paints must face each other
+  const float mx = 0.5f * (b.x0 + b.x1) - a.x0, my = 0.5f * (b.y0 + b.y1) - a.y0;
+  const float distance = mx * ca.sx + my * ca.sy;
+  const float len = std::hypot(a.x1 - a.x0, a.y1 - a.y0);
+  const float t0 = (b.x0 - a.x0) * ca.ux + (b.y0 - a.y0) * ca.uy;
+  const float t1 = (b.x1 - a.x0) * ca.ux + (b.y1 - a.y0) * ca.uy;
+  if (std::max(t0, t1) <= 0 || std::min(t0, t1) >= len) return -1;
+  return distance > 0 ? distance : -1;
+}
+
+// One marking from two twin edges: the line half-way between them over the union of their
+// lengths along a, and their mean measured width.
+Marking merge(const Segment& a, const Candidate& ca, const Segment& b, const Candidate& cb, float distance) {
+  const float ox = a.x0 + 0.5f * distance * ca.sx, oy = a.y0 + 0.5f * distance * ca.sy;
+  const float len = std::hypot(a.x1 - a.x0, a.y1 - a.y0);
+  const float t0 = (b.x0 - a.x0) * ca.ux + (b.y0 - a.y0) * ca.uy;
+  const float t1 = (b.x1 - a.x0) * ca.ux + (b.y1 - a.y0) * ca.uy;
+  const float lo = std::min({0.f, t0, t1}), hi = std::max({len, t0, t1});
+  return {ox + lo * ca.ux, oy + lo * ca.uy, ox + hi * ca.ux, oy + hi * ca.uy, 0.5f * (ca.width + cb.width)};
+}
+
+}  // namespace
+
+void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<Segment> segments,
+                  const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out) {
+  out.clear();
+  work.candidates.clear();
+  const bool readable = !bgr8.empty() && bgr8.type() == CV_8UC3 && field;
+  if (readable) {
+    const FieldPixel pixel(*field, FieldBoundaryParams{});
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      if (segments[i].label != Label::Marking) continue;
+      Candidate c;
+      c.segment = i;
+      if (measure_candidate(bgr8, pixel, segments[i], params, work, c)) work.candidates.push_back(c);
+    }
+  }
+  // Every marking that is not a stripe, and every stripe left without its twin when twins are
+  // required, becomes none below; the rest are set back to Marking.
+  for (Segment& s : segments)
+    if (s.label == Label::Marking) s.label = Label::None;
+  std::vector<Candidate>& cs = work.candidates;
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    if (cs[i].paired) continue;
+    const Segment& a = segments[cs[i].segment];
+    std::size_t best = cs.size();
+    float best_error = 0, best_distance = 0;
+    for (std::size_t j = i + 1; j < cs.size(); ++j) {
+      if (cs[j].paired) continue;
+      const float d = twin_distance(a, cs[i], segments[cs[j].segment], cs[j]);
+      if (d < 0) continue;
+      const float width = 0.5f * (cs[i].width + cs[j].width);
+      const float error = std::abs(d - width);
+      if (error > std::max(kTwinMinSlackPx, kTwinWidthShare * width)) continue;
+      if (best == cs.size() || error < best_error) best = j, best_error = error, best_distance = d;
+    }
+    if (best < cs.size()) {
+      cs[i].paired = cs[best].paired = true;
+      segments[cs[best].segment].label = Label::Marking;
+      out.push_back(merge(a, cs[i], segments[cs[best].segment], cs[best], best_distance));
+    } else if (params.stripe_require_twin) {
+      continue;
+    } else {
+      out.push_back(centre_of(a, cs[i]));
+    }
+    segments[cs[i].segment].label = Label::Marking;
+  }
+}
+
+}  // namespace fieldlines

@@ -1,0 +1,66 @@
+#pragma once
+// The field features a synthetic frame shows, from its field and camera (the truth file's scene,
+// line width, intrinsics and pose), and scores for detected features against them.
+//
+// Intersections: where two straight painted lines of the field meet (their centrelines cross
+// within a line width of both), with one arm per side on which a line goes on. A junction is
+// visible when its centre projects into the frame within 3 px (or a line width) of a visible
+// painted line of the truth (robots hide some) where the paint is at least 1 px wide; an arm is
+// visible when it reaches 12 px from the centre inside the frame. Its type is what is visible:
+// 2 arms an L, 3 a T, 4 an X; fewer than 2 arms, or 2 nearly opposite, is no junction in the
+// image. Headings as soccer_vision_2d_msgs: radians in [0, 2pi), 0 along +x, pi/2 image down,
+// ascending. Junctions that do not meet these conditions, and the centre circle's crossings with
+// the halfway line, are `ignored`.
+//
+// The centre circle: the image ellipse of the whole circle (when all of it is in front of the
+// camera, cv::fitEllipse on 720 projected points of its centreline) and the share of it visible
+// (inside the frame and within 2 px of the truth's visible "centre circle" polylines).
+#include <array>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "fieldlines/detect/field_features.hpp"
+#include "fieldlines/synth/truth.hpp"
+
+namespace fieldlines::synth {
+
+struct TruthCircle {
+  MarkingEllipse ellipse;   // confidence 1
+  float visible_share = 0;  // of its centreline, in [0, 1]
+};
+
+struct FeatureTruth {
+  std::vector<Intersection> intersections;  // confidence 1
+  // Scored neither way (a detection within reach of one is no false positive, and it is not
+  // needed for recall): hidden or thinner than 1 px, cut by the frame to one line, and the
+  // centre circle's crossings with straight lines. Position only.
+  std::vector<Intersection> ignored;
+  std::optional<TruthCircle> circle;        // none when not all of it is in front of the camera
+};
+
+FeatureTruth feature_truth(const GroundTruth& truth);
+
+struct FeatureScoreParams {
+  float max_distance_px = 6;          // a detected junction matches a true one this close
+  float min_circle_share = 0.3f;      // circles at least this visible must be found...
+  float max_centre_error = 0.1f;      // ...with the centre within this share of the radius
+};
+
+struct FeatureScore {
+  long detected = 0, truth = 0, matched = 0, type_correct = 0;  // intersections
+  long circles = 0, circles_found = 0;  // frames with a circle visible enough; found in those
+  long ellipses = 0, ellipses_wrong = 0;  // detected; of those, matching no visible circle
+  double precision() const { return detected > 0 ? double(matched) / detected : 0; }
+  double recall() const { return truth > 0 ? double(matched) / truth : 0; }
+  double type_accuracy() const { return matched > 0 ? double(type_correct) / matched : 0; }
+  double circle_rate() const { return circles > 0 ? double(circles_found) / circles : 0; }
+  FeatureScore& operator+=(const FeatureScore& o);
+};
+
+// The circle's "radius" in the image is the geometric mean of the ellipse's semi-axes. Junctions
+// match greedily, nearest first.
+FeatureScore score_features(const FeatureTruth& truth, const FieldFeatures& detected,
+                            const FeatureScoreParams& params = {});
+
+}  // namespace fieldlines::synth

@@ -1,0 +1,117 @@
+// The centre circle (centre_circle.hpp) on synthetic frames with known answers: a circle seen
+// in perspective (an ellipse drawn on turf, the halfway line through it) is one ellipse with its
+// centre and axes; straight lines and corners are none; bad input never crashes.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include "fieldlines/detect/centre_circle.hpp"
+#include "fieldlines/detect/detector.hpp"
+
+namespace fieldlines {
+namespace {
+
+const cv::Scalar kTurf(50, 140, 40), kPaint(255, 255, 255);
+
+cv::Mat noisy(const cv::Mat& clean, std::uint64_t seed = 7) {
+  cv::Mat noise(clean.size(), CV_16SC3), wide, out;
+  cv::RNG rng(seed);
+  rng.fill(noise, cv::RNG::NORMAL, 0, 4);
+  clean.convertTo(wide, CV_16SC3);
+  wide += noise;
+  wide.convertTo(out, CV_8UC3);
+  return out;
+}
+
+DetectorParams circle_on() {
+  DetectorParams p;
+  p.centre_circle = true;
+  return p;
+}
+
+FieldFeatures features(const cv::Mat& frame, const DetectorParams& params = circle_on()) {
+  LineDetector detector(params);
+  std::vector<Segment> segments;
+  detector.detect(frame, segments);
+  return detector.features();
+}
+
+void expect_ellipse(const FieldFeatures& f, cv::Point2f centre, cv::Size2f axes, float angle_deg) {
+  ASSERT_EQ(f.ellipses.size(), 1u);
+  const MarkingEllipse& e = f.ellipses[0];
+  const float radius = 0.5f * std::min(axes.width, axes.height);
+  EXPECT_LE(std::hypot(e.cx - centre.x, e.cy - centre.y), 0.1f * radius) << e.cx << ", " << e.cy;
+  // Width is along angle_deg: compare the axes as the pair they are.
+  const float turn = std::remainder(e.angle_deg - angle_deg, 180.f);
+  const bool swapped = std::abs(turn) > 45;
+  const float w = swapped ? e.height : e.width, h = swapped ? e.width : e.height;
+  EXPECT_NEAR(w, axes.width, 0.1f * axes.width);
+  EXPECT_NEAR(h, axes.height, 0.1f * axes.height);
+  if (std::abs(axes.width - axes.height) > 0.2f * axes.width) {
+    EXPECT_LT(std::abs(std::remainder(turn, 90.f)), 5.f) << e.angle_deg;
+  }
+  EXPECT_GT(e.confidence, 0.5f);
+  EXPECT_LE(e.confidence, 1.f);
+}
+
+TEST(CentreCircle, ACircleInPerspectiveWithTheHalfwayLineThroughIt) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  const cv::Point2f centre(330, 260);
+  const cv::Size2f axes(380, 150);  // full axes: a circle seen from 23 degrees above the turf
+  cv::ellipse(clean, cv::RotatedRect(centre, axes, 4), kPaint, 7, cv::LINE_AA);
+  cv::line(clean, cv::Point(0, 250), cv::Point(639, 272), kPaint, 7, cv::LINE_AA);
+  const FieldFeatures f = features(noisy(clean));
+  expect_ellipse(f, centre, axes, 4);
+  EXPECT_FALSE(f.markings.empty()) << "the circle's pieces are markings (arcs)";
+}
+
+TEST(CentreCircle, ARoundCircleHalfOutOfTheFrame) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  const cv::Point2f centre(320, 420);
+  const cv::Size2f axes(300, 280);
+  cv::ellipse(clean, cv::RotatedRect(centre, axes, 0), kPaint, 6, cv::LINE_AA);
+  expect_ellipse(features(noisy(clean, 3)), centre, axes, 0);
+}
+
+TEST(CentreCircle, StraightLinesAndCornersAreNoCircle) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  cv::line(clean, cv::Point(60, 100), cv::Point(590, 120), kPaint, 8);
+  cv::line(clean, cv::Point(60, 300), cv::Point(590, 330), kPaint, 8);
+  cv::line(clean, cv::Point(120, 440), cv::Point(300, 160), kPaint, 8);
+  cv::line(clean, cv::Point(300, 160), cv::Point(600, 420), kPaint, 8);
+  EXPECT_TRUE(features(noisy(clean, 9)).ellipses.empty());
+}
+
+TEST(CentreCircle, BadInputGivesNoneAndNeverCrashes) {
+  cv::Mat grey(240, 320, CV_8UC3, cv::Scalar(110, 110, 110));  // no green
+  cv::ellipse(grey, cv::RotatedRect(cv::Point2f(160, 120), cv::Size2f(200, 90), 0), kPaint, 5);
+  EXPECT_TRUE(features(noisy(grey)).ellipses.empty());
+  for (const cv::Size size : {cv::Size(640, 1), cv::Size(1, 480), cv::Size(3, 3), cv::Size(640, 3)}) {
+    cv::Mat tiny(size, CV_8UC3, kTurf);
+    cv::line(tiny, cv::Point(0, 0), cv::Point(size.width - 1, size.height - 1), kPaint, 1);
+    EXPECT_NO_THROW(EXPECT_TRUE(features(tiny).ellipses.empty())) << size;
+  }
+  for (const cv::Scalar& colour : {kTurf, kPaint})
+    EXPECT_TRUE(features(noisy(cv::Mat(240, 320, CV_8UC3, colour))).ellipses.empty());
+  // Degenerate pieces: zero length, coincident, collinear.
+  CircleWorkspace work;
+  std::vector<MarkingEllipse> out;
+  const std::vector<Marking> odd{{5, 5, 5, 5, 3}, {5, 5, 5, 5, 3}, {0, 0, 10, 0, 2}, {10, 0, 20, 0, 2},
+                                 {20, 0, 30, 0, 2}};
+  find_centre_circle(odd, work, out);
+  EXPECT_TRUE(out.empty());
+  find_centre_circle({}, work, out);
+  EXPECT_TRUE(out.empty());
+}
+
+TEST(CentreCircle, OffByDefault) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  cv::ellipse(clean, cv::RotatedRect(cv::Point2f(320, 240), cv::Size2f(380, 150), 0), kPaint, 7);
+  EXPECT_TRUE(features(noisy(clean), DetectorParams{}).ellipses.empty());
+}
+
+}  // namespace
+}  // namespace fieldlines

@@ -1,0 +1,227 @@
+// Stripes (stripes.hpp) on synthetic frames with known answers: painted lines drawn on turf are
+// markings with their centre and width; a wall or a post with turf on one side only is not.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/light.hpp"
+#include "fieldlines/detect/stripes.hpp"
+
+namespace fieldlines {
+namespace {
+
+const cv::Scalar kTurf(50, 140, 40), kPaint(255, 255, 255), kDark(25, 25, 25);
+
+// Camera-like noise (fixed seed): on a noiseless step edge drawing finds no anchor.
+cv::Mat noisy(const cv::Mat& clean, std::uint64_t seed = 7) {
+  cv::Mat noise(clean.size(), CV_16SC3), wide, out;
+  cv::RNG rng(seed);
+  rng.fill(noise, cv::RNG::NORMAL, 0, 4);
+  clean.convertTo(wide, CV_16SC3);
+  wide += noise;
+  wide.convertTo(out, CV_8UC3);
+  return out;
+}
+
+DetectorParams stripes_on(bool require_twin = false) {
+  DetectorParams p;
+  p.stripes = true;
+  p.stripe_require_twin = require_twin;
+  return p;
+}
+
+struct Detected {
+  std::vector<Segment> segments;
+  std::vector<Marking> markings;
+};
+
+Detected detect(const cv::Mat& frame, const DetectorParams& params = stripes_on()) {
+  LineDetector detector(params);
+  Detected r;
+  detector.detect(frame, r.segments);
+  r.markings = detector.features().markings;
+  return r;
+}
+
+int count(const std::vector<Segment>& segments, Label label) {
+  int n = 0;
+  for (const Segment& s : segments) n += s.label == label;
+  return n;
+}
+
+// Distance of (x, y) from the infinite line through a and b.
+float distance_to_line(float x, float y, cv::Point2f a, cv::Point2f b) {
+  const float dx = b.x - a.x, dy = b.y - a.y;
+  return std::abs((x - a.x) * dy - (y - a.y) * dx) / std::hypot(dx, dy);
+}
+
+void expect_centre_line(const Marking& m, cv::Point2f a, cv::Point2f b, float width) {
+  const float tolerance = 0.5f * width + 1;
+  EXPECT_LE(distance_to_line(m.x0, m.y0, a, b), tolerance);
+  EXPECT_LE(distance_to_line(m.x1, m.y1, a, b), tolerance);
+  EXPECT_NEAR(m.width, width, 0.5f * width + 1);
+}
+
+TEST(Stripes, AWhiteLineOnTurfIsOneMarkingWithItsWidthAndCentre) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  const cv::Point2f a(60, 300), b(580, 330);
+  constexpr int kWidth = 9;
+  cv::line(clean, a, b, kPaint, kWidth);
+  const Detected r = detect(noisy(clean));
+  ASSERT_EQ(r.markings.size(), 1u);
+  expect_centre_line(r.markings[0], a, b, kWidth);
+  EXPECT_GT(std::hypot(r.markings[0].x1 - r.markings[0].x0, r.markings[0].y1 - r.markings[0].y0), 300);
+  EXPECT_EQ(count(r.segments, Label::Marking), 2) << "both edges stay markings";
+}
+
+TEST(Stripes, LinesOfSeveralWidthsAndDirections) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  const cv::Point2f a0(80, 120), b0(560, 140), a1(320, 160), b1(220, 460);
+  cv::line(clean, a0, b0, kPaint, 4);
+  cv::line(clean, a1, b1, kPaint, 14);
+  const Detected r = detect(noisy(clean, 11));
+  ASSERT_GE(r.markings.size(), 2u);
+  for (const Marking& m : r.markings) {
+    const bool first = distance_to_line(m.x0, m.y0, a0, b0) < 10;
+    SCOPED_TRACE(first ? "thin line" : "wide line");
+    if (first) expect_centre_line(m, a0, b0, 4);
+    else expect_centre_line(m, a1, b1, 14);
+  }
+}
+
+TEST(Stripes, AWhiteWallAboveTheTurfIsNoMarking) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  cv::rectangle(clean, cv::Point(0, 0), cv::Point(639, 180), kPaint, cv::FILLED);
+  const cv::Mat frame = noisy(clean);
+  const Detected off = detect(frame, DetectorParams{});
+  ASSERT_GT(count(off.segments, Label::Marking), 0) << "the colour test alone calls the wall's foot a marking";
+  const Detected on = detect(frame);
+  EXPECT_EQ(count(on.segments, Label::Marking), 0);
+  EXPECT_TRUE(on.markings.empty());
+}
+
+// A white board or a goal's side panel standing on the field: turf outside each edge, but white
+// far beyond any plausible width inside.
+TEST(Stripes, AWideWhiteBoardStandingOnTheTurfIsNoMarking) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  cv::rectangle(clean, cv::Point(0, 0), cv::Point(639, 90), kDark, cv::FILLED);
+  cv::rectangle(clean, cv::Point(250, 60), cv::Point(420, 300), kPaint, cv::FILLED);
+  const cv::Mat frame = noisy(clean);
+  const Detected off = detect(frame, DetectorParams{});
+  ASSERT_GE(count(off.segments, Label::Marking), 3) << "the colour test alone calls its edges markings";
+  const Detected on = detect(frame);
+  EXPECT_EQ(count(on.segments, Label::Marking), 0);
+  EXPECT_TRUE(on.markings.empty());
+}
+
+// The caller's segments: one edge of a line whose other edge was not detected.
+TEST(Stripes, ALineWithOneEdgeDetectedIsStillMeasured) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  constexpr int kTop = 240, kBottom = 251;  // paint rows, 12 px
+  cv::rectangle(clean, cv::Point(40, kTop), cv::Point(600, kBottom), kPaint, cv::FILLED);
+  const cv::Mat frame = noisy(clean);
+  const std::optional<Rgb> field = estimate_field_colour(frame);
+  ASSERT_TRUE(field);
+  StripeWorkspace work;
+  std::vector<Marking> out;
+  const float edge = kBottom + 0.5f;  // between the last paint row and the first turf row
+  const float centre = 0.5f * (kTop + kBottom);
+  std::vector<Segment> one{{.x0 = 100, .y0 = edge, .x1 = 500, .y1 = edge, .label = Label::Marking}};
+  find_stripes(frame, field, one, stripes_on(), work, out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(one[0].label, Label::Marking);
+  EXPECT_NEAR(out[0].y0, centre, 1);
+  EXPECT_NEAR(out[0].y1, centre, 1);
+  EXPECT_NEAR(out[0].width, 12, 1.5);
+  EXPECT_FLOAT_EQ(out[0].x0, 100);
+
+  // Both edges: one marking over the union of their lengths.
+  const Segment top{.x0 = 80, .y0 = kTop - 0.5f, .x1 = 450, .y1 = kTop - 0.5f, .label = Label::Marking};
+  std::vector<Segment> two{one[0], top};
+  find_stripes(frame, field, two, stripes_on(), work, out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(count(two, Label::Marking), 2);
+  EXPECT_NEAR(out[0].y0, centre, 1);
+  EXPECT_NEAR(std::min(out[0].x0, out[0].x1), 80, 1);
+  EXPECT_NEAR(std::max(out[0].x0, out[0].x1), 500, 1);
+
+  // When twins are required, the lone edge is no marking.
+  one[0].label = Label::Marking;
+  find_stripes(frame, field, one, stripes_on(true), work, out);
+  EXPECT_TRUE(out.empty());
+  EXPECT_EQ(one[0].label, Label::None);
+}
+
+TEST(Stripes, OtherLabelsAreLeftAlone) {
+  const cv::Mat frame = noisy(cv::Mat(120, 160, CV_8UC3, kTurf));
+  StripeWorkspace work;
+  std::vector<Marking> out;
+  std::vector<Segment> s{{.x0 = 10, .y0 = 60, .x1 = 150, .y1 = 60, .label = Label::Boundary},
+                         {.x0 = 10, .y0 = 30, .x1 = 150, .y1 = 30, .label = Label::Marking}};
+  find_stripes(frame, estimate_field_colour(frame), s, stripes_on(), work, out);
+  EXPECT_EQ(s[0].label, Label::Boundary);
+  EXPECT_EQ(s[1].label, Label::None) << "plain turf is no stripe";
+  EXPECT_TRUE(out.empty());
+}
+
+void expect_sane(const Detected& r, const cv::Mat& frame) {
+  for (const Marking& m : r.markings) {
+    for (const float v : {m.x0, m.y0, m.x1, m.y1, m.width}) EXPECT_TRUE(std::isfinite(v));
+    EXPECT_GT(m.width, 0);
+    EXPECT_LE(m.width, frame.rows);
+  }
+}
+
+TEST(Stripes, BadInputGivesSaneOutput) {
+  // No green: a white line on grey concrete has no turf, so nothing is a marking.
+  cv::Mat grey(240, 320, CV_8UC3, cv::Scalar(110, 110, 110));
+  cv::line(grey, cv::Point(20, 120), cv::Point(300, 130), kPaint, 6);
+  const Detected no_green = detect(noisy(grey));
+  EXPECT_TRUE(no_green.markings.empty());
+  EXPECT_EQ(count(no_green.segments, Label::Marking), 0);
+
+  for (const cv::Scalar& colour : {kTurf, kPaint}) {
+    const cv::Mat flat = noisy(cv::Mat(240, 320, CV_8UC3, colour));
+    const Detected r = detect(flat);
+    EXPECT_TRUE(r.markings.empty());
+    expect_sane(r, flat);
+  }
+  for (const cv::Size size : {cv::Size(640, 1), cv::Size(1, 480), cv::Size(3, 3), cv::Size(640, 3)}) {
+    cv::Mat tiny(size, CV_8UC3, kTurf);
+    cv::line(tiny, cv::Point(0, 0), cv::Point(size.width - 1, size.height - 1), kPaint, 1);
+    EXPECT_NO_THROW(expect_sane(detect(tiny), tiny)) << size;
+  }
+  // A line wider than the frame is high: paint from border to border, turf in two corners.
+  cv::Mat wide(60, 320, CV_8UC3, kTurf);
+  cv::line(wide, cv::Point(0, 0), cv::Point(319, 59), kPaint, 90);
+  const cv::Mat wide_frame = noisy(wide);
+  const Detected r = detect(wide_frame);
+  expect_sane(r, wide_frame);
+  // Grey and 16-bit frames go through the detector's normalisation first.
+  cv::Mat line16;
+  noisy(cv::Mat(240, 320, CV_8UC3, kTurf)).convertTo(line16, CV_16UC3, 256);
+  EXPECT_NO_THROW(detect(line16));
+  // And a frame find_stripes cannot read keeps no marking.
+  StripeWorkspace work;
+  std::vector<Marking> out;
+  std::vector<Segment> s{{.x0 = 10, .y0 = 30, .x1 = 150, .y1 = 30, .label = Label::Marking}};
+  find_stripes(cv::Mat(), Rgb{40, 140, 50}, s, stripes_on(), work, out);
+  EXPECT_TRUE(out.empty());
+  EXPECT_EQ(s[0].label, Label::None);
+}
+
+TEST(Stripes, OffByDefaultAndThenLabelsAreUntouched) {
+  EXPECT_FALSE(DetectorParams{}.stripes);
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  cv::rectangle(clean, cv::Point(0, 0), cv::Point(639, 180), kPaint, cv::FILLED);
+  const Detected off = detect(noisy(clean), DetectorParams{});
+  EXPECT_TRUE(off.markings.empty());
+  EXPECT_GT(count(off.segments, Label::Marking), 0);
+}
+
+}  // namespace
+}  // namespace fieldlines
