@@ -150,13 +150,10 @@ void add_data_file(Inputs& in, const std::string& path) {
   }
 }
 
-Inputs gather(const std::vector<std::string>& paths, DetectorParams params, const Thresholds& start, int every,
-              bool quiet) {
-  // The fit reads no label, so the stages that only relabel (stripes and what builds on them)
-  // would cost time for nothing here; the robot runs them from the file.
-  params.stripes = params.intersections = params.centre_circle = false;
+Inputs gather(const std::vector<std::string>& paths, const DetectorParams& params, const Thresholds& start,
+              int every, bool quiet) {
   Inputs in;
-  LineDetector detector(params, start);
+  LineDetector detector(for_fitting(params), start);
   visit_inputs(paths, every, quiet,
                {.frame = [&](const cv::Mat& image) { in.data.add_image(detector, image); ++in.images; },
                 .data_file = [&](const std::string& p) { add_data_file(in, p); },

@@ -77,6 +77,11 @@ DetectorParams calibrated_detector(const DetectorParams& given, const FieldContr
   return d;
 }
 
+DetectorParams for_fitting(DetectorParams chosen) {
+  chosen.stripes = chosen.intersections = chosen.centre_circle = false;
+  return chosen;
+}
+
 nlohmann::json detector_provenance(const FieldContrast& contrast, const DetectorParams& chosen, bool calibrated) {
   return {{"calibrated", calibrated},
           {"frames_with_field", contrast.frames()},

@@ -60,6 +60,10 @@ class FieldContrast {
 DetectorParams calibrated_detector(const DetectorParams& given, const FieldContrast& contrast,
                                    const DetectorCalibrationParams& params = {});
 
+// The parameters to detect calibration frames with: `chosen` without the stages that only
+// relabel (stripes, and what builds on them), which the fit, reading no label, does not need.
+DetectorParams for_fitting(DetectorParams chosen);
+
 // What the thresholds file's provenance records of it: the measured contrasts and the choice.
 nlohmann::json detector_provenance(const FieldContrast& contrast, const DetectorParams& chosen, bool calibrated);
 
