@@ -20,24 +20,7 @@ out="${1:-build/venue-calibration}"
 data="${SHARED:-../shared}/data"
 rm -rf "$out"
 mkdir -p "$out"
-# venue|frames (glob under data)|title
-venues=("msl-delocht|msl-samples/20190606_r4_*|MSL, De Locht 2019"
-        "msl-bangkok|msl-samples/20220715_r7_*|MSL, Bangkok 2022"
-        "msl-bordeaux|msl-samples/20230709_r5_*|MSL, Bordeaux 2023"
-        "humanoid|humanoid-samples/*|Humanoid (mixed fields)"
-        "ssl|elsed-ssl/images/*.png|SSL (the authors' lab field)")
-# Every segment a marking, the boundary off: what the detector offers the classifier.
-everything() {  # THRESHOLDS OUT: its detector parameters, every segment a marking
-  python3 - "$1" "$2" <<'PY'
-import json, sys
-t = json.load(open(sys.argv[1]))
-t["classes"]["marking"].update(max_angle_deg=90, min_projection=0, min_length=0)
-t["classes"]["boundary"].update(max_angle_deg=0, min_projection=1000, min_length=100000)
-t["detector"]["stripes"] = False
-t.pop("light", None); t.pop("field_boundary", None)
-json.dump(t, open(sys.argv[2], "w"))
-PY
-}
+source scripts/venue_common.sh
 everything assets/default_thresholds.json "$out/everything.json"
 stripes() {  # THRESHOLDS -> the same file with the stripes stage on, beside it
   local on="${1%.json}-stripes.json"
@@ -45,21 +28,13 @@ stripes() {  # THRESHOLDS -> the same file with the stripes stage on, beside it
   python3 -c "import json,sys; t=json.load(open(sys.argv[1])); t['detector']['stripes']=True; json.dump(t, open(sys.argv[2], 'w'))" "$1" "$on"
   echo "$on"
 }
-score() {  # VENUE THRESHOLDS -> "P | R"
-  "$bin" eval --hand "tests/data/hand_truth/$1" --data "$data" --thresholds "$2" --json "$out/score.json" >/dev/null
-  python3 -c "import json; m=json.load(open('$out/score.json'))['total']['marking']; print('%.3f | %.3f' % (m['precision'], m['recall']))"
-}
 echo "| venue | frames fitted / scored | thresholds | marking P | marking R | calibration says |"
 echo "|---|---|---|---:|---:|---|"
 for v in "${venues[@]}"; do
   IFS='|' read -r id pattern title <<<"$v"
   [[ -d "tests/data/hand_truth/$id" ]] || continue
   if ! compgen -G "$data/$pattern" >/dev/null; then echo "| $title | not measured: no $data | | | | |"; continue; fi
-  scored=$(python3 -c "import json,glob; print(' '.join(json.load(open(f))['image'] for f in glob.glob('tests/data/hand_truth/$id/*.json')))")
-  mkdir -p "$out/$id"
-  for image in $data/$pattern; do
-    [[ " $scored " == *" ${image#$data/} "* ]] || ln -s "$(realpath "$image")" "$out/$id/"
-  done
+  fitting_frames "$id" "$pattern"
   fitted=$(ls "$out/$id" | wc -l)
   n_scored=$(wc -w <<<"$scored")
   echo "| $title | $fitted / $n_scored | built-in | $(score "$id" assets/default_thresholds.json) | |"
