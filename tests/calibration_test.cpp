@@ -163,7 +163,7 @@ cv::Mat field_picture(cv::Scalar turf, cv::Scalar paint, unsigned seed) {
   return image;
 }
 
-TEST(DetectorCalibration, ChoosesTheAnchorGridAndStripesAndFollowsTheFieldsContrast) {
+TEST(DetectorCalibration, ChoosesTheAnchorGridAndStripesAndMeasuresTheFieldsContrast) {
   const fl::DetectorParams given;
   fl::FieldContrast bright, dim, none;
   for (unsigned seed = 1; seed <= 3; ++seed) {
@@ -178,9 +178,13 @@ TEST(DetectorCalibration, ChoosesTheAnchorGridAndStripesAndFollowsTheFieldsContr
   EXPECT_EQ(b.gaussian_kernel, 5);
   EXPECT_EQ(b.min_line_length, 25);
   EXPECT_TRUE(b.stripes);
-  // Strong paint keeps the given threshold; faint paint lowers it, never below the floor.
+  // By default the given threshold (measured: lowering it is mixed). Following the contrast,
+  // strong paint keeps it and faint paint lowers it, never below the floor.
   EXPECT_EQ(b.gradient_threshold, given.gradient_threshold);
-  const fl::DetectorParams d = fl::calibrated_detector(given, dim);
+  EXPECT_EQ(fl::calibrated_detector(given, dim).gradient_threshold, given.gradient_threshold);
+  const fl::DetectorCalibrationParams follow{.follow_contrast = true};
+  EXPECT_EQ(fl::calibrated_detector(given, bright, follow).gradient_threshold, given.gradient_threshold);
+  const fl::DetectorParams d = fl::calibrated_detector(given, dim, follow);
   EXPECT_LT(d.gradient_threshold, given.gradient_threshold);
   EXPECT_GE(d.gradient_threshold, fl::DetectorCalibrationParams{}.min_gradient_threshold);
   EXPECT_GT(dim.paint(), dim.texture());

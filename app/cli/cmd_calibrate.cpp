@@ -40,10 +40,9 @@ PATH is an image, a folder of images, a video (every N-th frame), a project file
 CSV (its label columns may be missing).
 
 Detector: from images and videos it chooses the detector parameters too and writes them into the
-file: ELSED's anchor grid and smoothing (scan interval 2, kernel 5), minimum length 25, the
-stripes stage on (markings must be turf, paint, turf), and the gradient threshold from the
-field's contrast (that of --thresholds, default built-in, lowered only where the paint is faint).
---keep-detector keeps the detector parameters of --thresholds instead; segments from a project or
+file: ELSED's anchor grid and smoothing (scan interval 2, kernel 5), minimum length 25 and the
+stripes stage on (markings must be turf, paint, turf); the rest, the gradient threshold
+included, from --thresholds (default built-in). --keep-detector keeps the detector parameters of --thresholds instead; segments from a project or
 CSV keep them always (they were detected already).
 
 A class the images do not show (no boundary wall, say) is disabled and reported; a weak fit

@@ -71,6 +71,7 @@ DetectorParams calibrated_detector(const DetectorParams& given, const FieldContr
   d.scan_interval = params.scan_interval;
   d.min_line_length = params.min_line_length;
   d.stripes = true;
+  if (!params.follow_contrast) return d;
   const double wanted = std::max(params.paint_share * contrast.paint(), params.texture_margin * contrast.texture());
   d.gradient_threshold = std::clamp(static_cast<int>(std::lround(wanted)), params.min_gradient_threshold,
                                     std::max(params.min_gradient_threshold, given.gradient_threshold));

@@ -8,10 +8,11 @@
 // grid and smoothing (kernel 5, scan 2). The non-field pieces these let through are what the
 // stripes stage (turf, paint, turf; stripes.hpp) removes, so it comes on with them; what it
 // cannot remove is shortest, so the minimum length is 25 rather than ELSED's 15 (which lost
-// 0.11 of marking precision on the SSL frames for no recall). The gradient threshold follows
-// the frames' contrast: the given one on every venue measured (20 or 30 scored the same, 50
-// lost recall), lower only where the field's paint is faint (a dim frame's paint edges fall below
-// a fixed 30), never into the turf's own texture.
+// 0.11 of marking precision on the SSL frames for no recall). The gradient threshold stays
+// the given one by default: on every venue measured the contrast rule below gives it anyway (20
+// or 30 scored the same, 50 lost recall), and on the same venues at a third of the exposure,
+// where it lowers it, it won recall on one venue and lost 0.15 of precision on another
+// (docs/calibration.md, "A dim field"). The field's contrast is measured and recorded either way.
 //
 // Units: gradients are the detector's, Sobel |dx| + |dy| of the smoothed grey image.
 #include <cstddef>
@@ -33,6 +34,7 @@ struct DetectorCalibrationParams {
   double paint_share = 0.25;        // the threshold keeps edges of this share of the paint's contrast
   double texture_margin = 1.5;      // and stays this far above the turf's texture
   int min_gradient_threshold = 8;   // below: sensor noise on any field
+  bool follow_contrast = false;     // the threshold from the contrast, below: measured mixed
 };
 
 // The field's contrast per frame: percentiles of the gradient on its green pixels
@@ -53,10 +55,10 @@ class FieldContrast {
   cv::Mat grey_, smooth_, dx_, dy_;
 };
 
-// `given` with the anchor grid, minimum length and smoothing of `params`, the stripes stage on
-// and the gradient threshold from `contrast`: paint_share of the paint's contrast, at least
-// texture_margin times the turf's texture, never above the given threshold. Without a frame that
-// showed a field, `given` unchanged.
+// `given` with the anchor grid, minimum length and smoothing of `params` and the stripes stage
+// on; with follow_contrast, the gradient threshold from `contrast`: paint_share of the paint's
+// contrast, at least texture_margin times the turf's texture, never above the given threshold.
+// Without a frame that showed a field, `given` unchanged.
 DetectorParams calibrated_detector(const DetectorParams& given, const FieldContrast& contrast,
                                    const DetectorCalibrationParams& params = {});
 
