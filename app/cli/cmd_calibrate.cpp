@@ -42,8 +42,9 @@ CSV (its label columns may be missing).
 Detector: from images and videos it chooses the detector parameters too and writes them into the
 file: ELSED's anchor grid and smoothing (scan interval 2, kernel 5), minimum length 25 and the
 stripes stage on (markings must be turf, paint, turf); the rest, the gradient threshold
-included, from --thresholds (default built-in). --keep-detector keeps the detector parameters of --thresholds instead; segments from a project or
-CSV keep them always (they were detected already).
+included, from --thresholds (default built-in). --keep-detector keeps the detector parameters
+of --thresholds instead; segments from a project or CSV keep them always (they were detected
+already).
 
 A class the images do not show (no boundary wall, say) is disabled and reported; a weak fit
 (few edges, classes that overlap) is kept with a warning. When the markings cannot be fitted
