@@ -3,8 +3,8 @@
 #  1. The authors' five annotation files: each calibrated with its label columns cut off, then
 #     scored against the human labels on all rows (`fieldlines eval`).
 #  2. Synthetic sets: calibrated on the images of seed 1 (all lighting conditions), scored
-#     against the exact ground truth of seed 2, next to supervised training on the same seed-1
-#     images (autolabelled) and the default thresholds.
+#     against the exact ground truth of seed 2 (also with the built-in detector kept), next to
+#     supervised training on the same seed-1 images (autolabelled) and the default thresholds.
 #   usage: bash scripts/calibration_table.sh [OUT_DIR]   (default build/calibration-table)
 #   env:   FIELDLINES_BIN (default build/release/app/cli/fieldlines), SHARED (default ../shared)
 set -euo pipefail
@@ -34,9 +34,13 @@ for scene in ssl kid; do
   # A refusal is a result too: say so and go on.
   "$bin" calibrate "$out/$scene-train" -o "$out/$scene-label-free.json" --quiet 2> "$out/$scene-calibrate.err" ||
     echo "$scene: label-free refused: $(cat "$out/$scene-calibrate.err")"
+  # The same with the built-in detector parameters kept (before calibration chose them).
+  "$bin" calibrate "$out/$scene-train" -o "$out/$scene-label-free-built-in-detector.json" --keep-detector --quiet \
+    2> "$out/$scene-calibrate-kept.err" ||
+    echo "$scene: label-free with the built-in detector refused: $(cat "$out/$scene-calibrate-kept.err")"
   "$bin" autolabel "$out/$scene-train" --csv "$out/$scene-train.csv" --quiet
   "$bin" train "$out/$scene-train.csv" --train-fraction 1 -o "$out/$scene-supervised.json" --quiet >/dev/null
-  for t in label-free supervised; do
+  for t in label-free label-free-built-in-detector supervised; do
     [[ -f "$out/$scene-$t.json" ]] || continue
     echo "#### $scene, $t"
     "$bin" eval --gt "$out/$scene-test" --thresholds "$out/$scene-$t.json" --markdown | tail -1

@@ -5,8 +5,10 @@
 #   the built-in thresholds, the calibration without and with per-frame light adaptation,
 #   the built-in thresholds and the calibration with light adaptation, each with the stripes
 #   stage on (stripes.hpp: markings must be turf, paint, turf),
+#   (these with the built-in detector parameters: --keep-detector), and the calibration that
+#   chooses the detector parameters too (the command's default; detector_calibration.hpp),
 # and the recall ceiling (every segment called a marking: the share of line edges on any
-# segment) of the detector parameters used. Prints Markdown. Before/after overlays of the scored
+# segment) of the built-in and of the calibrated detector parameters. Prints Markdown. Before/after overlays of the scored
 # frames go to OUT_DIR/overlays/<venue>/{built-in,calibrated}/ (not into docs/: they are the
 # shared data's images).
 #   usage: bash scripts/venue_calibration.sh [OUT_DIR]   (default build/venue-calibration)
@@ -18,29 +20,13 @@ out="${1:-build/venue-calibration}"
 data="${SHARED:-../shared}/data"
 rm -rf "$out"
 mkdir -p "$out"
-# venue|frames (glob under data)|title
-venues=("msl-delocht|msl-samples/20190606_r4_*|MSL, De Locht 2019"
-        "msl-bangkok|msl-samples/20220715_r7_*|MSL, Bangkok 2022"
-        "msl-bordeaux|msl-samples/20230709_r5_*|MSL, Bordeaux 2023"
-        "humanoid|humanoid-samples/*|Humanoid (mixed fields)"
-        "ssl|elsed-ssl/images/*.png|SSL (the authors' lab field)")
-# Every segment a marking, the boundary off: what the detector offers the classifier.
-python3 - assets/default_thresholds.json "$out/everything.json" <<'PY'
-import json, sys
-t = json.load(open(sys.argv[1]))
-t["classes"]["marking"].update(max_angle_deg=90, min_projection=0, min_length=0)
-t["classes"]["boundary"].update(max_angle_deg=0, min_projection=1000, min_length=100000)
-json.dump(t, open(sys.argv[2], "w"))
-PY
+source scripts/venue_common.sh
+everything assets/default_thresholds.json "$out/everything.json"
 stripes() {  # THRESHOLDS -> the same file with the stripes stage on, beside it
   local on="${1%.json}-stripes.json"
   [[ $1 == assets/* ]] && on="$out/$(basename "${1%.json}")-stripes.json"
   python3 -c "import json,sys; t=json.load(open(sys.argv[1])); t['detector']['stripes']=True; json.dump(t, open(sys.argv[2], 'w'))" "$1" "$on"
   echo "$on"
-}
-score() {  # VENUE THRESHOLDS -> "P | R"
-  "$bin" eval --hand "tests/data/hand_truth/$1" --data "$data" --thresholds "$2" --json "$out/score.json" >/dev/null
-  python3 -c "import json; m=json.load(open('$out/score.json'))['total']['marking']; print('%.3f | %.3f' % (m['precision'], m['recall']))"
 }
 echo "| venue | frames fitted / scored | thresholds | marking P | marking R | calibration says |"
 echo "|---|---|---|---:|---:|---|"
@@ -48,18 +34,16 @@ for v in "${venues[@]}"; do
   IFS='|' read -r id pattern title <<<"$v"
   [[ -d "tests/data/hand_truth/$id" ]] || continue
   if ! compgen -G "$data/$pattern" >/dev/null; then echo "| $title | not measured: no $data | | | | |"; continue; fi
-  scored=$(python3 -c "import json,glob; print(' '.join(json.load(open(f))['image'] for f in glob.glob('tests/data/hand_truth/$id/*.json')))")
-  mkdir -p "$out/$id"
-  for image in $data/$pattern; do
-    [[ " $scored " == *" ${image#$data/} "* ]] || ln -s "$(realpath "$image")" "$out/$id/"
-  done
+  fitting_frames "$id" "$pattern"
   fitted=$(ls "$out/$id" | wc -l)
   n_scored=$(wc -w <<<"$scored")
   echo "| $title | $fitted / $n_scored | built-in | $(score "$id" assets/default_thresholds.json) | |"
   echo "| | | built-in + stripes | $(score "$id" "$(stripes assets/default_thresholds.json)") | |"
-  for mode in no-light light; do
-    flag=(); [[ $mode == no-light ]] && flag=(--no-light-adaptation)
+  for mode in no-light light detector; do
+    flag=(--keep-detector); [[ $mode == no-light ]] && flag+=(--no-light-adaptation)
+    [[ $mode == detector ]] && flag=()
     label="calibrated"; [[ $mode == light ]] && label="calibrated + light adaptation"
+    [[ $mode == detector ]] && label="**calibrated detector + thresholds** (light adaptation, stripes)"
     if "$bin" calibrate "$out/$id" -o "$out/$id-$mode.json" --json "$out/$id-$mode.fit.json" --quiet "${flag[@]}" \
         2> "$out/$id-$mode.err"; then
       says=$(python3 -c "
@@ -80,7 +64,11 @@ print('; '.join(parts))")
   "$bin" detect --quiet --draw "$out/overlays/$id/built-in" "${scored_paths[@]}"
   [[ -f "$out/$id-light.json" ]] &&
     "$bin" detect --quiet --thresholds "$out/$id-light.json" --draw "$out/overlays/$id/calibrated" "${scored_paths[@]}"
-  echo "| | | (recall ceiling of the detector) | | $(score "$id" "$out/everything.json" | cut -d'|' -f2 | tr -d ' ') | |"
+  echo "| | | (recall ceiling of the built-in detector) | | $(score "$id" "$out/everything.json" | cut -d'|' -f2 | tr -d ' ') | |"
+  if [[ -f "$out/$id-detector.json" ]]; then
+    everything "$out/$id-detector.json" "$out/$id-everything.json"
+    echo "| | | (recall ceiling of the calibrated detector) | | $(score "$id" "$out/$id-everything.json" | cut -d'|' -f2 | tr -d ' ') | |"
+  fi
 done
 
 echo
@@ -93,12 +81,13 @@ for c in "${conditions[@]}"; do
     "$bin" synth --scene kid --condition "$c" --n 20 --seed "$seed" --quiet -o "$out/kid-$c-$seed" >/dev/null
   done
 done
-echo "| calibrated on | light adaptation | $(printf '%s | ' "${conditions[@]}")"
-echo "|---|---|$(printf -- '---:|%.0s' "${conditions[@]}")"
+echo "| calibrated on | light adaptation | detector | $(printf '%s | ' "${conditions[@]}")"
+echo "|---|---|---|$(printf -- '---:|%.0s' "${conditions[@]}")"
 for cal in "${conditions[@]}"; do
-  for mode in no-light light; do
-    flag=(); [[ $mode == no-light ]] && flag=(--no-light-adaptation)
-    row="| $cal | $([[ $mode == light ]] && echo on || echo off) |"
+  for mode in no-light light detector; do
+    flag=(--keep-detector); [[ $mode == no-light ]] && flag+=(--no-light-adaptation)
+    [[ $mode == detector ]] && flag=()
+    row="| $cal | $([[ $mode == no-light ]] && echo off || echo on) | $([[ $mode == detector ]] && echo calibrated || echo built-in) |"
     "$bin" calibrate "$out/kid-$cal-1" -o "$out/kid-$cal-$mode.json" --quiet "${flag[@]}"
     for c in "${conditions[@]}"; do
       if [[ $c == "$cal" ]]; then row+=" (fitted) |"; continue; fi

@@ -72,6 +72,9 @@ TEST_F(Calibrate, LabelsAreNeverReadAndTheSameInputGivesTheSameBytes) {
   const fl::ThresholdsFile file = fl::load_thresholds_file(dir_ / "a.json");
   EXPECT_EQ(file.provenance["method"], "label-free");
   EXPECT_EQ(file.provenance["counts"]["segments"], 2684);
+  // Segments from a file were detected already: the detector parameters stay those given.
+  EXPECT_EQ(file.detector, fl::DetectorParams{});
+  EXPECT_FALSE(file.provenance["detector"]["calibrated"].get<bool>());
   EXPECT_TRUE(file.provenance["fit"]["marking"]["fitted"].get<bool>());
   EXPECT_GT(file.thresholds.marking.thresholds.max_angle_deg, 30.f);
   EXPECT_LT(file.thresholds.marking.thresholds.max_angle_deg, 35.f);
@@ -107,6 +110,37 @@ TEST_F(Calibrate, ImageFoldersAreDetectedThenFittedWithAReport) {
   EXPECT_TRUE(fit["fit"]["marking"]["fitted"].get<bool>()) << fit.dump(2);
   EXPECT_GE(fit["fit_ms"].get<double>(), 0.0);
   EXPECT_EQ(fit["thresholds"], classes(out));
+}
+
+TEST_F(Calibrate, PicturesChooseTheDetectorAndKeepDetectorKeepsTheGivenOne) {
+  const fs::path set = dir_ / "set";
+  ASSERT_EQ(run_cli({"synth", "--scene", "kid", "--n", "12", "--seed", "3", "-o", set.string(), "--quiet"}, dir_).exit_code, 0);
+  const fs::path chosen = dir_ / "chosen.json", kept = dir_ / "kept.json", given = dir_ / "given.json";
+  const auto r = run_cli({"calibrate", set.string(), "-o", chosen.string(), "--quiet"}, dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The file still loads, with the venue's detector: the finer anchor grid and the stripes on.
+  const fl::ThresholdsFile file = fl::load_thresholds_file(chosen);
+  EXPECT_EQ(file.detector.scan_interval, 2);
+  EXPECT_EQ(file.detector.gaussian_kernel, 5);
+  EXPECT_EQ(file.detector.min_line_length, 25);
+  EXPECT_TRUE(file.detector.stripes);
+  EXPECT_GE(file.detector.gradient_threshold, 8);
+  EXPECT_LE(file.detector.gradient_threshold, fl::DetectorParams{}.gradient_threshold);
+  EXPECT_TRUE(file.provenance["detector"]["calibrated"].get<bool>());
+  EXPECT_EQ(file.provenance["detector"]["frames_with_field"], 12);
+  // --keep-detector: the parameters of --thresholds (here the built-in ones, one changed).
+  fl::ThresholdsFile start;
+  start.detector.min_line_length = 33;
+  fl::save_thresholds_file(given, start);
+  ASSERT_EQ(run_cli({"calibrate", set.string(), "-o", kept.string(), "--thresholds", given.string(), "--keep-detector",
+                     "--quiet"}, dir_).exit_code, 0);
+  const fl::ThresholdsFile k = fl::load_thresholds_file(kept);
+  EXPECT_EQ(k.detector, start.detector);
+  EXPECT_FALSE(k.provenance["detector"]["calibrated"].get<bool>());
+  EXPECT_TRUE(k.provenance["fit"]["marking"]["fitted"].get<bool>());
+  // And the robot's command reads both.
+  for (const fs::path& t : {chosen, kept})
+    EXPECT_EQ(run_cli({"detect", set.string(), "--thresholds", t.string(), "--quiet"}, dir_).exit_code, 0);
 }
 
 TEST_F(Calibrate, BadInputIsAMessageExit2AndNoFile) {

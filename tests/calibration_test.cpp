@@ -8,11 +8,14 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "fieldlines/data/labelled_set.hpp"
 #include "fieldlines/data/reference_csv.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/train/calibrate.hpp"
+#include "fieldlines/train/detector_calibration.hpp"
 #include "fieldlines/train/metrics.hpp"
 #include "known_features.hpp"
 #include "shared_data.hpp"
@@ -148,6 +151,49 @@ TEST(Calibration, AFewMarkingEdgesCalibrateWithAWarning) {
 
 // The bars, on all rows of each of the authors' files with the labels stripped before
 // calibrating and used only for scoring.
+// Turf (BGR) with a little texture and two painted lines of `paint` (BGR).
+cv::Mat field_picture(cv::Scalar turf, cv::Scalar paint, unsigned seed) {
+  cv::Mat image(240, 320, CV_8UC3, turf);
+  cv::Mat noise(image.size(), CV_8UC3);
+  cv::theRNG().state = seed;
+  cv::randu(noise, 0, 4);
+  image += noise;
+  cv::line(image, {20, 200}, {300, 190}, paint, 5);
+  cv::line(image, {160, 40}, {170, 230}, paint, 4);
+  return image;
+}
+
+TEST(DetectorCalibration, ChoosesTheAnchorGridAndStripesAndMeasuresTheFieldsContrast) {
+  const fl::DetectorParams given;
+  fl::FieldContrast bright, dim, none;
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    bright.add_image(field_picture({40, 120, 40}, {230, 230, 230}, seed));
+    dim.add_image(field_picture({30, 70, 30}, {75, 75, 75}, seed));
+    none.add_image(cv::Mat(240, 320, CV_8UC3, cv::Scalar(128, 128, 128)));
+  }
+  EXPECT_EQ(bright.frames(), 3u);
+  EXPECT_EQ(none.frames(), 0u);
+  const fl::DetectorParams b = fl::calibrated_detector(given, bright);
+  EXPECT_EQ(b.scan_interval, 2);
+  EXPECT_EQ(b.gaussian_kernel, 5);
+  EXPECT_EQ(b.min_line_length, 25);
+  EXPECT_TRUE(b.stripes);
+  // By default the given threshold (measured: lowering it is mixed). Following the contrast,
+  // strong paint keeps it and faint paint lowers it, never below the floor.
+  EXPECT_EQ(b.gradient_threshold, given.gradient_threshold);
+  EXPECT_EQ(fl::calibrated_detector(given, dim).gradient_threshold, given.gradient_threshold);
+  const fl::DetectorCalibrationParams follow{.follow_contrast = true};
+  EXPECT_EQ(fl::calibrated_detector(given, bright, follow).gradient_threshold, given.gradient_threshold);
+  const fl::DetectorParams d = fl::calibrated_detector(given, dim, follow);
+  EXPECT_LT(d.gradient_threshold, given.gradient_threshold);
+  EXPECT_GE(d.gradient_threshold, fl::DetectorCalibrationParams{}.min_gradient_threshold);
+  EXPECT_GT(dim.paint(), dim.texture());
+  // No field in view: nothing measured, nothing changed.
+  EXPECT_EQ(fl::calibrated_detector(given, none), given);
+  EXPECT_NO_THROW(fl::validate(b));
+  EXPECT_NO_THROW(fl::validate(d));
+}
+
 TEST(CalibrationShared, MeetsTheBarsOnTheAuthorsFilesWithoutTheirLabels) {
   FIELDLINES_REQUIRE_SHARED("data/elsed-ssl/annotations", dir);
   struct Bar {

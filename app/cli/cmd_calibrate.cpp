@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "fieldlines/detect/thresholds_file.hpp"
 #include "fieldlines/train/calibrate.hpp"
 #include "fieldlines/train/calibration_inputs.hpp"
+#include "fieldlines/train/detector_calibration.hpp"
 
 namespace fieldlines::cli {
 namespace {
@@ -35,8 +37,14 @@ ordinary thresholds file for the robot (provenance "method": "label-free"). The 
 always gives the same file.
 
 PATH is an image, a folder of images, a video (every N-th frame), a project file or a reference
-CSV (its label columns may be missing). Images and videos are detected with the detector
-parameters of --thresholds (default: built-in).
+CSV (its label columns may be missing).
+
+Detector: from images and videos it chooses the detector parameters too and writes them into the
+file: ELSED's anchor grid and smoothing (scan interval 2, kernel 5), minimum length 25 and the
+stripes stage on (markings must be turf, paint, turf); the rest, the gradient threshold
+included, from --thresholds (default built-in). --keep-detector keeps the detector parameters
+of --thresholds instead; segments from a project or CSV keep them always (they were detected
+already).
 
 A class the images do not show (no boundary wall, say) is disabled and reported; a weak fit
 (few edges, classes that overlap) is kept with a warning. When the markings cannot be fitted
@@ -54,6 +62,7 @@ options:
                       expected precision and recall, warning; "refused" when it refuses)
   --every N           from a video, take every N-th frame (default 10)
   --thresholds FILE   detector parameters and colour classes to start from (default: built-in)
+  --keep-detector     do not choose the detector parameters: keep those of --thresholds
   --no-light-adaptation
                       do not map each frame onto one light by its field colour (see below)
   --quiet             no summary on stdout, no progress on stderr
@@ -71,12 +80,15 @@ struct Inputs {
   int failed = 0;          // inputs that could not be read (reported, the rest went on)
 };
 
-void add_detected(Inputs& in, LineDetector& detector, const cv::Mat& image) {
-  in.data.add_image(detector, image);
-  ++in.images;
-}
+// What to do with each input: a decoded frame, a project or CSV path, one that could not be
+// read (printed once: by the pass that counts it).
+struct InputVisitor {
+  std::function<void(const cv::Mat&)> frame;
+  std::function<void(const std::string&)> data_file = [](const std::string&) {};
+  std::function<void()> failed;  // empty: failures are neither printed nor counted
+};
 
-void add_video(Inputs& in, LineDetector& detector, const fs::path& path, int every, bool quiet) {
+void visit_video(const fs::path& path, int every, bool quiet, const InputVisitor& v) {
   cv::VideoCapture capture;
   if (!open_video_file(capture, path.string())) throw Error(path.string() + ": cannot open as a video");
   const double count = capture.get(cv::CAP_PROP_FRAME_COUNT);
@@ -85,11 +97,46 @@ void add_video(Inputs& in, LineDetector& detector, const fs::path& path, int eve
                     {quiet ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
   for_each_nth_frame(capture, every, [&](long, const cv::Mat& frame) {
     if (!frame.empty()) {
-      add_detected(in, detector, frame);
+      v.frame(frame);
       progress.advance();
     }
     return true;
   });
+}
+
+bool is_data_file(const fs::path& path) {
+  return is_reference_csv_data(path.string()) || lower_extension(path) == ".json";
+}
+
+// Videos and data files in command-line order, then the images (a folder's sorted).
+void visit_inputs(const std::vector<std::string>& paths, int every, bool quiet, const InputVisitor& v) {
+  std::vector<std::string> image_paths;
+  for (const std::string& p : paths) {
+    // Images by name first: telling a CSV by its header would read every image once more.
+    if (fs::is_directory(p) || has_image_extension(p)) image_paths.push_back(p);
+    else if (has_video_extension(p)) visit_video(p, every, quiet, v);
+    else if (is_data_file(p)) v.data_file(p);
+    else image_paths.push_back(p);  // the image loader names what is wrong with it
+  }
+  const ImageInputs images = expand_image_inputs(image_paths);
+  Progress progress("calibrate", images.images.size(), stderr,
+                    {quiet ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
+  const auto failed = [&](const std::string& message) {
+    if (!v.failed) return;
+    progress.message("fieldlines calibrate: " + message);
+    v.failed();
+  };
+  for (const FailedImage& f : images.failed) failed(f.error);
+  for (const fs::path& image : images.images) {
+    std::optional<cv::Mat> frame;
+    try {
+      frame = load_image(image);
+    } catch (const Error& e) {
+      failed(e.what());
+    }
+    if (frame) v.frame(*frame);
+    progress.advance();
+  }
 }
 
 // A project or reference CSV already holds segments: their features, never their labels.
@@ -103,38 +150,26 @@ void add_data_file(Inputs& in, const std::string& path) {
   }
 }
 
-bool is_data_file(const fs::path& path) {
-  return is_reference_csv_data(path.string()) || lower_extension(path) == ".json";
+Inputs gather(const std::vector<std::string>& paths, const DetectorParams& params, const Thresholds& start,
+              int every, bool quiet) {
+  Inputs in;
+  LineDetector detector(for_fitting(params), start);
+  visit_inputs(paths, every, quiet,
+               {.frame = [&](const cv::Mat& image) { in.data.add_image(detector, image); ++in.images; },
+                .data_file = [&](const std::string& p) { add_data_file(in, p); },
+                .failed = [&] { ++in.failed; }});
+  return in;
 }
 
-Inputs gather(const std::vector<std::string>& paths, const ThresholdsFile& config, int every, bool quiet) {
-  Inputs in;
-  LineDetector detector(config.detector, config.thresholds);
-  std::vector<std::string> image_paths;
-  for (const std::string& p : paths) {
-    // Images by name first: telling a CSV by its header would read every image once more.
-    if (fs::is_directory(p) || has_image_extension(p)) image_paths.push_back(p);
-    else if (has_video_extension(p)) add_video(in, detector, p, every, quiet);
-    else if (is_data_file(p)) add_data_file(in, p);
-    else image_paths.push_back(p);  // the image loader names what is wrong with it
-  }
-  const ImageInputs images = expand_image_inputs(image_paths);
-  Progress progress("calibrate", images.images.size(), stderr,
-                    {quiet ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
-  for (const FailedImage& f : images.failed) {
-    progress.message("fieldlines calibrate: " + f.error);
-    ++in.failed;
-  }
-  for (const fs::path& image : images.images) {
-    try {
-      add_detected(in, detector, load_image(image));
-    } catch (const Error& e) {
-      progress.message(std::string("fieldlines calibrate: ") + e.what());
-      ++in.failed;
-    }
-    progress.advance();
-  }
-  return in;
+// The detector for the venue (detector_calibration.hpp) from a first look at its frames; the
+// given one when there are no frames (segments from a file) or with --keep-detector.
+DetectorParams venue_detector(const std::vector<std::string>& paths, const DetectorParams& given, int every,
+                              bool quiet, nlohmann::json& provenance) {
+  FieldContrast contrast({}, given.gaussian_sigma);
+  visit_inputs(paths, every, quiet, {.frame = [&](const cv::Mat& image) { contrast.add_image(image); }, .failed = {}});
+  const DetectorParams chosen = calibrated_detector(given, contrast);
+  provenance = detector_provenance(contrast, chosen, contrast.frames() > 0);
+  return chosen;
 }
 
 void show_class(const char* name, const ClassCalibration& c, const ClassThresholds& t) {
@@ -151,7 +186,7 @@ void show_class(const char* name, const ClassCalibration& c, const ClassThreshol
 }  // namespace
 
 int cmd_calibrate(const Args& args) {
-  const auto parsed = parse_or_print_help(args, {"-o", "--output", "--json", "--every", "--thresholds"}, {"--quiet", "--no-light-adaptation"}, kHelp);
+  const auto parsed = parse_or_print_help(args, {"-o", "--output", "--json", "--every", "--thresholds"}, {"--quiet", "--no-light-adaptation", "--keep-detector"}, kHelp);
   if (!parsed) return 0;
   const ParsedArgs& a = *parsed;
   if (a.positionals().empty()) throw Error("expected at least one PATH (see --help)");
@@ -164,7 +199,11 @@ int cmd_calibrate(const Args& args) {
   if (const auto t = a.value("--thresholds")) config = load_thresholds_file(*t);
 
   const auto t0 = std::chrono::steady_clock::now();
-  Inputs in = gather(a.positionals(), config, every, quiet);
+  nlohmann::json detector_report = {{"calibrated", false}};
+  const DetectorParams detector = a.flag("--keep-detector")
+                                      ? config.detector
+                                      : venue_detector(a.positionals(), config.detector, every, quiet, detector_report);
+  Inputs in = gather(a.positionals(), detector, config.thresholds, every, quiet);
   const Thresholds start = in.data.image_settings(config.thresholds, !a.flag("--no-light-adaptation"));
   const auto t1 = std::chrono::steady_clock::now();
   const Calibration fit = calibrate(in.data.segments(), start, {}, in.data.boundary_candidates());
@@ -172,6 +211,7 @@ int cmd_calibrate(const Args& args) {
   const double gather_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   nlohmann::json p = calibration_provenance(fit);
   p["inputs"] = a.positionals();
+  p["detector"] = detector_report;
   p["counts"] = {{"segments", in.data.segments().size()}, {"images", in.images}, {"failed_inputs", in.failed},
                  {"frames_with_field_colour", in.data.frames_with_field()}};
   // No date: the same input gives the same bytes.
@@ -192,7 +232,7 @@ int cmd_calibrate(const Args& args) {
   const Thresholds thresholds = calibrated_thresholds(fit, start);
 
   ThresholdsFile file;
-  file.detector = config.detector;
+  file.detector = detector;
   file.thresholds = thresholds;
   file.provenance = p;
   save_thresholds_file(output, file);

@@ -28,6 +28,7 @@
 #include "fieldlines/detect/thresholds_file.hpp"
 #include "fieldlines/train/calibrate.hpp"
 #include "fieldlines/train/calibration_inputs.hpp"
+#include "fieldlines/train/detector_calibration.hpp"
 #include "json_dict.hpp"
 
 namespace py = pybind11;
@@ -182,7 +183,7 @@ py::array classify_segments(const py::object& segments, const py::object& thresh
   return out;
 }
 
-py::dict calibrate_images(const py::object& images, const py::object& thresholds) {
+py::dict calibrate_images(const py::object& images, const py::object& thresholds, bool keep_detector) {
   if (py::isinstance<py::array>(images))
     throw py::type_error("images: expected a sequence of images, got one array (pass [image])");
   if (!py::isinstance<py::iterable>(images))
@@ -202,9 +203,18 @@ py::dict calibrate_images(const py::object& images, const py::object& thresholds
   Thresholds calibrated;
   CalibrationInputs inputs;
   Thresholds adapted;
+  DetectorParams chosen = start.detector;
+  nlohmann::json detector_report = {{"calibrated", false}};
   {
     py::gil_scoped_release nogil;
-    LineDetector detector(start.detector, start.thresholds);
+    // The venue's detector from a first look at the frames, as `fieldlines calibrate` does.
+    if (!keep_detector) {
+      FieldContrast contrast({}, start.detector.gaussian_sigma);
+      for (const cv::Mat& view : views) contrast.add_image(view);
+      chosen = calibrated_detector(start.detector, contrast);
+      detector_report = detector_provenance(contrast, chosen, contrast.frames() > 0);
+    }
+    LineDetector detector(for_fitting(chosen), start.thresholds);
     for (const cv::Mat& view : views) inputs.add_image(detector, view);
     adapted = inputs.image_settings(start.thresholds, true);
     fit = calibrate(inputs.segments(), adapted, {}, inputs.boundary_candidates());
@@ -215,11 +225,12 @@ py::dict calibrate_images(const py::object& images, const py::object& thresholds
     throw py::value_error(std::string("calibration refused: ") + e.what());
   }
   ThresholdsFile file;
-  file.detector = start.detector;
+  file.detector = chosen;
   file.thresholds = calibrated;
   nlohmann::json& p = file.provenance;
   p = calibration_provenance(fit);
   p["inputs"] = "python: fieldlines.calibrate";
+  p["detector"] = detector_report;
   p["counts"] = {{"segments", inputs.segments().size()}, {"images", views.size()},
                  {"frames_with_field_colour", inputs.frames_with_field()}};
   p["fieldlines_version"] = FIELDLINES_VERSION;
@@ -290,10 +301,12 @@ A C-contiguous image (or a crop of one) is read without a copy; the GIL is relea
   m.def("classify", &classify_segments, py::arg("segments"), py::arg("thresholds") = py::none(),
         "Label codes (int8 array) of segments (SEGMENT_DTYPE) under a thresholds dict (default: the authors').");
   m.def("calibrate", &calibrate_images, py::arg("images"), py::arg("thresholds") = py::none(),
+        py::arg("keep_detector") = false,
         R"(Label-free calibration: a thresholds dict from a list of images, no labels needed.
 
-Detects every image with the detector parameters of `thresholds` (default: built-in), then fits
-both classes (fieldlines calibrate). Raises ValueError with the reason when the markings cannot
+Chooses the detector parameters from the images' field (as fieldlines calibrate; with
+keep_detector those of `thresholds`, default built-in), detects every image with them, then fits
+both classes. Raises ValueError with the reason when the markings cannot
 be fitted; a class the images do not show is disabled (provenance.fit says why).)");
   m.def("imread", &imread, py::arg("path"),
         "An image file as uint8 HxWx3 BGR (16-bit scaled, grey replicated, alpha dropped), decoded as the CLI does.");

@@ -79,7 +79,15 @@ def test_calibrate_equals_the_cli(ssl_images_dir, ssl_images, cli, tmp_path):
     # The segments above each frame's field boundary are left out of the fit, as the CLI does.
     counts = theirs["provenance"]["counts"]
     assert ours["provenance"]["counts"] == {"images": 41, "segments": counts["segments"], "frames_with_field_colour": 41}
-    assert 100 < counts["segments"] < 472
+    assert 100 < counts["segments"]
+    # The venue's detector: ELSED's finer anchor grid, with the stripes stage on.
+    assert ours["detector"]["scan_interval"] == 2 and ours["detector"]["stripes"] is True
+    assert ours["provenance"]["detector"] == theirs["provenance"]["detector"]
     # The result is an ordinary thresholds dict: a detector takes it, and it saves.
     fieldlines.LineDetector(ours).detect(ssl_images[0][1])
     fieldlines.save_thresholds_file(tmp_path / "robot.json", ours)
+    # keep_detector: the given detector parameters (here the built-in ones), as --keep-detector.
+    kept = fieldlines.calibrate([image for _, image in ssl_images], keep_detector=True)
+    assert kept["detector"] == fieldlines.load_thresholds_file(DEFAULTS)["detector"]
+    assert kept["provenance"]["detector"] == {"calibrated": False}
+    assert 100 < kept["provenance"]["counts"]["segments"] < 472  # of the method's 472, those below the boundary
