@@ -2,11 +2,12 @@
 // in perspective (an ellipse drawn on turf, the halfway line through it) is one ellipse with its
 // centre and axes; straight lines and corners are none; bad input never crashes.
 #include <cmath>
-#include <cstdint>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
+
+#include "painted_field.hpp"
 
 #include "fieldlines/detect/centre_circle.hpp"
 #include "fieldlines/detect/detector.hpp"
@@ -14,17 +15,7 @@
 namespace fieldlines {
 namespace {
 
-const cv::Scalar kTurf(50, 140, 40), kPaint(255, 255, 255);
-
-cv::Mat noisy(const cv::Mat& clean, std::uint64_t seed = 7) {
-  cv::Mat noise(clean.size(), CV_16SC3), wide, out;
-  cv::RNG rng(seed);
-  rng.fill(noise, cv::RNG::NORMAL, 0, 4);
-  clean.convertTo(wide, CV_16SC3);
-  wide += noise;
-  wide.convertTo(out, CV_8UC3);
-  return out;
-}
+using test::kPaint, test::kTurf, test::noisy;
 
 DetectorParams circle_on() {
   DetectorParams p;

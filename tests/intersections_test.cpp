@@ -2,12 +2,13 @@
 // of painted lines on turf, each found once with its type, centre and ray headings; pieces of
 // one junction merge; bad input gives none and never crashes.
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
+
+#include "painted_field.hpp"
 
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/intersections.hpp"
@@ -15,18 +16,8 @@
 namespace fieldlines {
 namespace {
 
-const cv::Scalar kTurf(50, 140, 40), kPaint(255, 255, 255);
+using test::kPaint, test::kTurf, test::noisy;
 constexpr float kPi = std::numbers::pi_v<float>;
-
-cv::Mat noisy(const cv::Mat& clean, std::uint64_t seed = 7) {
-  cv::Mat noise(clean.size(), CV_16SC3), wide, out;
-  cv::RNG rng(seed);
-  rng.fill(noise, cv::RNG::NORMAL, 0, 4);
-  clean.convertTo(wide, CV_16SC3);
-  wide += noise;
-  wide.convertTo(out, CV_8UC3);
-  return out;
-}
 
 DetectorParams intersections_on() {
   DetectorParams p;

@@ -1,11 +1,12 @@
 // Stripes (stripes.hpp) on synthetic frames with known answers: painted lines drawn on turf are
 // markings with their centre and width; a wall or a post with turf on one side only is not.
 #include <cmath>
-#include <cstdint>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
+
+#include "painted_field.hpp"
 
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/light.hpp"
@@ -14,18 +15,7 @@
 namespace fieldlines {
 namespace {
 
-const cv::Scalar kTurf(50, 140, 40), kPaint(255, 255, 255), kDark(25, 25, 25);
-
-// Camera-like noise (fixed seed): on a noiseless step edge drawing finds no anchor.
-cv::Mat noisy(const cv::Mat& clean, std::uint64_t seed = 7) {
-  cv::Mat noise(clean.size(), CV_16SC3), wide, out;
-  cv::RNG rng(seed);
-  rng.fill(noise, cv::RNG::NORMAL, 0, 4);
-  clean.convertTo(wide, CV_16SC3);
-  wide += noise;
-  wide.convertTo(out, CV_8UC3);
-  return out;
-}
+using test::kDark, test::kPaint, test::kTurf, test::noisy;
 
 DetectorParams stripes_on(bool require_twin = false) {
   DetectorParams p;
