@@ -199,25 +199,29 @@ TEST(DetectAllocations, CounterSeesEveryKindOfAllocation) {
       << "posix_memalign";
 }
 
-TEST(DetectAllocations, NoneOnSyntheticFramesOfOneSize) {
+// `count` synthetic fields, each shifted `step` px further, with names that say which.
+struct SyntheticFrames {
   std::vector<cv::Mat> frames;
   std::vector<std::string> names;
-  for (int shift = 0; shift < 6; ++shift) {
-    frames.push_back(test::synthetic_field(640, 480, shift * 7));
-    names.push_back("synthetic shift " + std::to_string(shift * 7));
+};
+SyntheticFrames synthetic_frames(int count, int step) {
+  SyntheticFrames out;
+  for (int shift = 0; shift < count; ++shift) {
+    out.frames.push_back(test::synthetic_field(640, 480, shift * step));
+    out.names.push_back("synthetic shift " + std::to_string(shift * step));
   }
+  return out;
+}
+
+TEST(DetectAllocations, NoneOnSyntheticFramesOfOneSize) {
+  const auto [frames, names] = synthetic_frames(6, 7);
   expect_warm_detect_allocates_nothing(frames, names);
 }
 
 // The robot's per-frame light adaptation (light.hpp) measures the field colour on fixed-size
 // histograms: still nothing.
 TEST(DetectAllocations, NoneWithLightAdaptation) {
-  std::vector<cv::Mat> frames;
-  std::vector<std::string> names;
-  for (int shift = 0; shift < 4; ++shift) {
-    frames.push_back(test::synthetic_field(640, 480, shift * 5));
-    names.push_back("synthetic shift " + std::to_string(shift * 5));
-  }
+  const auto [frames, names] = synthetic_frames(4, 5);
   ASSERT_TRUE(estimate_field_colour(frames.front())) << "the frames must show a field";
   Thresholds t;
   t.light = {true, {40, 120, 40}};
@@ -236,12 +240,7 @@ DetectorParams all_features() {
 // The stripes stage (stripes.hpp) measures its profiles in the detector's workspace and writes
 // the markings into the detector's features: still nothing.
 TEST(DetectAllocations, NoneWithStripes) {
-  std::vector<cv::Mat> frames;
-  std::vector<std::string> names;
-  for (int shift = 0; shift < 4; ++shift) {
-    frames.push_back(test::synthetic_field(640, 480, shift * 5));
-    names.push_back("synthetic shift " + std::to_string(shift * 5));
-  }
+  const auto [frames, names] = synthetic_frames(4, 5);
   DetectorParams stripes;
   stripes.stripes = true;
   LineDetector probe(stripes);
