@@ -1,6 +1,7 @@
 #include "fieldlines/detect/detector.hpp"
 
 #include <optional>
+#include <span>
 #include <string>
 
 #include <opencv2/imgproc.hpp>
@@ -66,6 +67,18 @@ const cv::Mat* LineDetector::normalise(const cv::Mat& image) {
   return &impl_->bgr8;
 }
 
+namespace {
+// The frame's light gain, the colour classes, then the field-boundary gate: one rule for the
+// detector's segments and for the short pieces of the junctions and the circle.
+void label(std::span<Segment> segments, std::optional<float> gain, const Thresholds& thresholds,
+           const FieldBoundary& boundary) {
+  if (gain) apply_light_gain(segments, *gain);
+  classify_all(segments, thresholds);
+  if (thresholds.field_boundary_gate)
+    for (Segment& s : segments) s.label = gate_by_field_boundary(s, boundary);
+}
+}  // namespace
+
 void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   out.clear();
   impl_->field.reset();
@@ -77,13 +90,12 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   // Junctions and the circle are made of stripes.
   const bool stripes = params_.stripes || params_.intersections || params_.centre_circle;
   if (thresholds_.light.enabled || boundary || stripes) impl_->field = estimate_field_colour(*bgr);
-  const bool gain = thresholds_.light.enabled && impl_->field;
-  if (gain) apply_light_gain(out, light_gain(thresholds_.light.reference_field, *impl_->field));
-  classify_all(out, thresholds_);
+  std::optional<float> gain;
+  if (thresholds_.light.enabled && impl_->field)
+    gain = light_gain(thresholds_.light.reference_field, *impl_->field);
   FieldFeatures& f = impl_->features;
   if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary);
-  if (thresholds_.field_boundary_gate)
-    for (Segment& s : out) s.label = gate_by_field_boundary(s, f.field_boundary);
+  label(out, gain, thresholds_, f.field_boundary);
   if (stripes) find_stripes(*bgr, impl_->field, out, params_, impl_->stripes, f.markings);
   if (params_.intersections || params_.centre_circle) find_pieces(*bgr, gain);
 }
@@ -91,20 +103,17 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
 // The junctions and the circle need pieces shorter than the detector's minimum length (a line
 // running into a crossing stops short of it; a curve has no long straight piece): the frame is
 // drawn a second time from the same gradients, and those pieces that are stripes are the input.
-void LineDetector::find_pieces(const cv::Mat& bgr, bool gain) {
+void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain) {
   constexpr int kPieceScanInterval = 4;  // a short piece needs an anchor on it
   FieldFeatures& f = impl_->features;
   std::vector<Segment>& pieces = impl_->pieces;
   impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, pieces);
-  if (gain) apply_light_gain(pieces, light_gain(thresholds_.light.reference_field, *impl_->field));
   // The colour test without its length: shortness is what these pieces are for. (Leaving the
   // colour test to the stripes check alone finds a few more junctions at a fifth more false ones
   // on synthetic fields.)
   Thresholds short_pieces = thresholds_;
   short_pieces.marking.thresholds.min_length = 0;
-  classify_all(pieces, short_pieces);
-  if (thresholds_.field_boundary_gate)
-    for (Segment& s : pieces) s.label = gate_by_field_boundary(s, f.field_boundary);
+  label(pieces, gain, short_pieces, f.field_boundary);
   find_stripes(bgr, impl_->field, pieces, params_, impl_->piece_stripes, impl_->arcs);
   std::vector<std::uint8_t>& on_ellipse = impl_->circle.on_ellipse;
   if (params_.centre_circle) find_centre_circle(impl_->arcs, impl_->circle, f.ellipses);

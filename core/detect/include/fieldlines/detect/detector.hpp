@@ -62,7 +62,7 @@ class LineDetector {
  private:
   struct Impl;
   const cv::Mat* normalise(const cv::Mat& image);  // to 8-bit BGR; nullptr if smaller than 3x3
-  void find_pieces(const cv::Mat& bgr, bool gain);  // junctions and circle (detector.cpp)
+  void find_pieces(const cv::Mat& bgr, std::optional<float> gain);  // junctions, circle
   DetectorParams params_;
   Thresholds thresholds_;
   bool find_boundary_ = false;
