@@ -150,26 +150,54 @@ void add_data_file(Inputs& in, const std::string& path) {
   }
 }
 
+// The frames detected with `params`; each decoded frame also measured into `contrast` if given.
+// Unreadable inputs are printed and counted unless `again` (a second pass did that).
 Inputs gather(const std::vector<std::string>& paths, const DetectorParams& params, const Thresholds& start,
-              int every, bool quiet) {
+              int every, bool quiet, FieldContrast* contrast = nullptr, bool again = false) {
   Inputs in;
   LineDetector detector(for_fitting(params), start);
   visit_inputs(paths, every, quiet,
-               {.frame = [&](const cv::Mat& image) { in.data.add_image(detector, image); ++in.images; },
+               {.frame =
+                    [&](const cv::Mat& image) {
+                      if (contrast) contrast->add_image(image);
+                      in.data.add_image(detector, image);
+                      ++in.images;
+                    },
                 .data_file = [&](const std::string& p) { add_data_file(in, p); },
-                .failed = [&] { ++in.failed; }});
+                .failed = again ? std::function<void()>{} : [&] { ++in.failed; }});
   return in;
 }
 
-// The detector for the venue (detector_calibration.hpp) from a first look at its frames; the
-// given one when there are no frames (segments from a file) or with --keep-detector.
-DetectorParams venue_detector(const std::vector<std::string>& paths, const DetectorParams& given, int every,
-                              bool quiet, nlohmann::json& provenance) {
-  FieldContrast contrast({}, given.gaussian_sigma);
-  visit_inputs(paths, every, quiet, {.frame = [&](const cv::Mat& image) { contrast.add_image(image); }, .failed = {}});
-  const DetectorParams chosen = calibrated_detector(given, contrast);
-  provenance = detector_provenance(contrast, chosen, contrast.frames() > 0);
-  return chosen;
+struct VenueInputs {
+  Inputs in;
+  DetectorParams detector;
+  nlohmann::json provenance;
+};
+
+// The detector for the venue (detector_calibration.hpp) and the inputs detected with it; the
+// given detector when no frame showed a field (segments from a file) or with --keep-detector.
+// Decoding dominates, so one pass measures the contrast while it detects with the detector a
+// field gets; a second pass only when the choice turns out otherwise (no field in view) or
+// depends on the contrast (follow_contrast).
+VenueInputs gather_for_venue(const std::vector<std::string>& paths, const DetectorParams& given,
+                             const Thresholds& start, int every, bool quiet, bool keep_detector) {
+  if (keep_detector) return {gather(paths, given, start, every, quiet), given, {{"calibrated", false}}};
+  const DetectorCalibrationParams rule;
+  FieldContrast contrast(rule, given.gaussian_sigma);
+  if (rule.follow_contrast) {
+    visit_inputs(paths, every, quiet, {.frame = [&](const cv::Mat& image) { contrast.add_image(image); }, .failed = {}});
+    const DetectorParams chosen = calibrated_detector(given, contrast, rule);
+    return {gather(paths, chosen, start, every, quiet), chosen, detector_provenance(contrast, chosen, contrast.frames() > 0)};
+  }
+  const DetectorParams assumed = field_detector(given, rule);
+  Inputs in = gather(paths, assumed, start, every, quiet, &contrast);
+  const DetectorParams chosen = calibrated_detector(given, contrast, rule);
+  if (!(chosen == assumed)) {
+    Inputs again = gather(paths, chosen, start, every, true, nullptr, true);
+    again.failed = in.failed;
+    in = std::move(again);
+  }
+  return {std::move(in), chosen, detector_provenance(contrast, chosen, contrast.frames() > 0)};
 }
 
 void show_class(const char* name, const ClassCalibration& c, const ClassThresholds& t) {
@@ -199,11 +227,11 @@ int cmd_calibrate(const Args& args) {
   if (const auto t = a.value("--thresholds")) config = load_thresholds_file(*t);
 
   const auto t0 = std::chrono::steady_clock::now();
-  nlohmann::json detector_report = {{"calibrated", false}};
-  const DetectorParams detector = a.flag("--keep-detector")
-                                      ? config.detector
-                                      : venue_detector(a.positionals(), config.detector, every, quiet, detector_report);
-  Inputs in = gather(a.positionals(), detector, config.thresholds, every, quiet);
+  VenueInputs venue = gather_for_venue(a.positionals(), config.detector, config.thresholds, every, quiet,
+                                       a.flag("--keep-detector"));
+  Inputs& in = venue.in;
+  const DetectorParams& detector = venue.detector;
+  const nlohmann::json& detector_report = venue.provenance;
   const Thresholds start = in.data.image_settings(config.thresholds, !a.flag("--no-light-adaptation"));
   const auto t1 = std::chrono::steady_clock::now();
   const Calibration fit = calibrate(in.data.segments(), start, {}, in.data.boundary_candidates());

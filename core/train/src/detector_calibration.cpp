@@ -63,14 +63,19 @@ void FieldContrast::add_image(const cv::Mat& bgr) {
 double FieldContrast::texture() const { return median(texture_); }
 double FieldContrast::paint() const { return median(paint_); }
 
-DetectorParams calibrated_detector(const DetectorParams& given, const FieldContrast& contrast,
-                                   const DetectorCalibrationParams& params) {
-  if (contrast.frames() == 0) return given;
+DetectorParams field_detector(const DetectorParams& given, const DetectorCalibrationParams& params) {
   DetectorParams d = given;
   d.gaussian_kernel = params.gaussian_kernel;
   d.scan_interval = params.scan_interval;
   d.min_line_length = params.min_line_length;
   d.stripes = true;
+  return d;
+}
+
+DetectorParams calibrated_detector(const DetectorParams& given, const FieldContrast& contrast,
+                                   const DetectorCalibrationParams& params) {
+  if (contrast.frames() == 0) return given;
+  DetectorParams d = field_detector(given, params);
   if (!params.follow_contrast) return d;
   const double wanted = std::max(params.paint_share * contrast.paint(), params.texture_margin * contrast.texture());
   d.gradient_threshold = std::clamp(static_cast<int>(std::lround(wanted)), params.min_gradient_threshold,

@@ -56,7 +56,10 @@ class FieldContrast {
 };
 
 // `given` with the anchor grid, minimum length and smoothing of `params` and the stripes stage
-// on; with follow_contrast, the gradient threshold from `contrast`: paint_share of the paint's
+// on: the choice below when a frame showed a field and follow_contrast is off.
+DetectorParams field_detector(const DetectorParams& given, const DetectorCalibrationParams& params = {});
+
+// field_detector(given, params); with follow_contrast, the gradient threshold from `contrast`: paint_share of the paint's
 // contrast, at least texture_margin times the turf's texture, never above the given threshold.
 // Without a frame that showed a field, `given` unchanged.
 DetectorParams calibrated_detector(const DetectorParams& given, const FieldContrast& contrast,
