@@ -45,14 +45,15 @@ void draw_feature_toggles(const studio::StudioController& controller, studio::Fe
     ImGui::SameLine();  // two per row
   }
   const FieldFeatures& f = controller.field_features();
-  if (layers.any()) {
-    if (f.markings.empty() && f.intersections.empty() && f.ellipses.empty() && f.field_boundary.empty()) {
-      ImGui::TextDisabled("none for this image: features come with a detection here (Thresholds tab, Re-detect all)");
-    } else {
-      ImGui::TextDisabled("%zu stripes, %zu intersections, %zu circles, boundary of %zu points", f.markings.size(),
-                          f.intersections.size(), f.ellipses.size(), f.field_boundary.points.size());
-    }
+  if (!layers.any()) return;
+  ImGui::PushTextWrapPos(0);  // wrap at the panel's edge
+  if (f.markings.empty() && f.intersections.empty() && f.ellipses.empty() && f.field_boundary.empty()) {
+    ImGui::TextDisabled("none for this image: features come with a detection here (Thresholds tab, Re-detect all)");
+  } else {
+    ImGui::TextDisabled("this image: %zu stripes, %zu junctions, %zu circles, a boundary of %zu points",
+                        f.markings.size(), f.intersections.size(), f.ellipses.size(), f.field_boundary.points.size());
   }
+  ImGui::PopTextWrapPos();
 }
 }  // namespace
 
