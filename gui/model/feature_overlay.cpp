@@ -100,13 +100,17 @@ void add_stripes(std::span<const Marking> markings, const ViewTransform& view, f
 
 }  // namespace
 
+float feature_thickness(const ViewSettings& settings, float view_scale) {
+  return std::max(1.0f, std::round(settings.segment_width(kBaseThickness, view_scale)));
+}
+
 float junction_ring_radius(float thickness) { return 2 * thickness + 4; }
 float junction_tick_length(float thickness) { return 6 * thickness + 12; }
 
 void build_feature_drawing(const FieldFeatures& features, const FeatureLayers& layers, const ViewTransform& view,
                            const ViewSettings& settings, FeatureDrawing& out) {
   out.clear();
-  const float thickness = settings.segment_width(kBaseThickness, view.scale());
+  const float thickness = feature_thickness(settings, view.scale());
   // Lines in this order: the stripes, the circle, the junctions' ticks, the boundary last
   // (dashed: what is under it shows between its dashes). Rings and letters go over every line.
   if (layers.on(FeatureLayer::Stripes)) add_stripes(features.markings, view, thickness, out);

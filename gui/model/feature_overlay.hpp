@@ -56,6 +56,11 @@ struct FeatureDrawing {
 
 // Segments of the closed polyline approximating an ellipse.
 inline constexpr int kEllipseSteps = 64;
+// The features' line width, screen px: a segment's (ViewSettings::segment_width), rounded to
+// whole pixels and at least 1. Whole widths let ImGui draw each anti-aliased line as one
+// textured quad rather than three strips of triangles, which a software renderer fills at a
+// fraction of the cost (docs/studio.md, frame time).
+float feature_thickness(const ViewSettings& settings, float view_scale);
 // A junction's ring radius and ray tick end, screen px, for a line `thickness` px wide.
 float junction_ring_radius(float thickness);
 float junction_tick_length(float thickness);

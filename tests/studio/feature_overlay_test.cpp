@@ -120,7 +120,7 @@ TEST(FeatureOverlay, AJunctionIsARingItsRayTicksAndItsTypeLetter) {
   ASSERT_EQ(d.letters.size(), 1u);
   const fs::Vec2 centre{10 + 40.5f, 20 + 60.5f};
   EXPECT_EQ(d.rings[0].centre, centre);
-  const float thickness = fs::ViewSettings{}.segment_width(2, 1);
+  const float thickness = fs::feature_thickness({}, 1);
   EXPECT_FLOAT_EQ(d.rings[0].radius, fs::junction_ring_radius(thickness));
   EXPECT_EQ(d.rings[0].style.colour, rgba(fieldlines::palette::kFeature));
   // Each tick runs from the ring out along its heading: +x, +y (image down), -x.
@@ -183,15 +183,25 @@ TEST(FeatureOverlay, TheFieldBoundaryIsDashedWhiteWithThePatternRunningOnAcrossC
   EXPECT_LT(drawn, 0.9f * 200);
 }
 
-TEST(FeatureOverlay, WidthsFollowTheZoomAndTheUsersFactorLikeSegments) {
+TEST(FeatureOverlay, WidthsFollowTheZoomAndTheUsersFactorLikeSegmentsInWholePixels) {
   fs::ViewSettings wide;
   wide.set_line_width(2);
   const fs::FeatureDrawing base = draw(one_of_each(), only(FeatureLayer::CentreCircle), 1);
   const fs::FeatureDrawing widened = draw(one_of_each(), only(FeatureLayer::CentreCircle), 1, wide);
   const fs::FeatureDrawing zoomed = draw(one_of_each(), only(FeatureLayer::CentreCircle), 16);
-  EXPECT_FLOAT_EQ(base.lines[0].style.thickness, fs::ViewSettings{}.segment_width(2, 1));
+  EXPECT_FLOAT_EQ(base.lines[0].style.thickness, fs::ViewSettings{}.segment_width(2, 1));  // 2: whole already
   EXPECT_FLOAT_EQ(widened.lines[0].style.thickness, 2 * base.lines[0].style.thickness);
   EXPECT_FLOAT_EQ(zoomed.lines[0].style.thickness, 4 * base.lines[0].style.thickness);
+  // Between: the segment's width rounded (zoom 1.8: 2 * sqrt(1.8) = 2.68 -> 3), never below 1.
+  EXPECT_FLOAT_EQ(fs::feature_thickness({}, 1.8f), 3);
+  fs::ViewSettings thin;
+  thin.set_line_width(0.5f);
+  EXPECT_FLOAT_EQ(fs::feature_thickness(thin, 1), 1);
+  for (const float scale : {0.3f, 1.34f, 2.5f, 7.0f}) {
+    const float t = fs::feature_thickness({}, scale);
+    EXPECT_EQ(t, std::round(t)) << scale;
+    EXPECT_NEAR(t, fs::ViewSettings{}.segment_width(2, scale), 0.5f) << scale;
+  }
 }
 
 TEST(FeatureOverlay, FeaturesThatAreNotFiniteAreSkipped) {
