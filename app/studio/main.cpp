@@ -212,7 +212,7 @@ int run(const studio::StudioArgs& args) {
     open_session(std::move(start.opened));
     if (bench && args.input.empty()) {  // the synthetic scene: its features, every layer drawn
       session->set_field_features(0, studio::bench_scene_features());
-      ui.image_view.settings.features = studio::FeatureLayers::all();
+      if (args.bench_features) ui.image_view.settings.features = studio::FeatureLayers::all();
     }
   } else {
     import = std::make_unique<studio::VideoImport>(start.video, args.video_every);
