@@ -86,8 +86,8 @@ void add_stripes(std::span<const Marking> markings, const ViewTransform& view, f
     if (!finite(m.x0, m.y0) || !finite(m.x1, m.y1)) continue;
     const Vec2 a = screen(view, m.x0, m.y0), b = screen(view, m.x1, m.y1);
     out.lines.push_back({a, b, style});
-    // The width: a bar across each end, as long as the paint is wide (at least the ring's
-    // diameter of a junction would be too much: twice the line's width, so it always shows).
+    // The width: a bar across each end as long as the paint is wide, and at least twice the
+    // line's width, so a thin stripe's bar still shows beyond the line.
     const Vec2 d = b - a;
     const float length = std::hypot(d.x, d.y);
     if (!(length > 0) || !std::isfinite(m.width) || !(m.width > 0)) continue;
