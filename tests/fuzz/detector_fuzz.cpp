@@ -38,12 +38,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         __builtin_trap();
       if (std::memcmp(&s.x0, &fresh[i].x0, sizeof(float)) != 0 || s.saliency != fresh[i].saliency) __builtin_trap();
     }
-    // Every feature stage (stripes, intersections, centre circle) on the same frame: finite
+    // Every feature stage (stripes, intersections, centre circle) on the same frame, with the
+    // gradient threshold following the frame's field (dark_field above any field): finite
     // markings of positive width no wider than the frame is high, sane junctions and ellipses,
-    // and no state leaking between calls either.
+    // and no state leaking between calls either (the threshold changes from frame to frame).
     static const fieldlines::DetectorParams kStripes = [] {
       fieldlines::DetectorParams p;
       p.stripes = p.intersections = p.centre_circle = true;
+      p.dark_field = 765;
       return p;
     }();
     static fieldlines::LineDetector striped(kStripes);
