@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/detector.hpp"
@@ -157,7 +158,7 @@ namespace {
 
 // One image to score: where it is, its truth, and the row it counts in.
 struct EvalImage {
-  fs::path image;
+  fs::path image, mask;  // mask: synthetic sets only
   synth::GroundTruth truth;
   std::string row, condition;
 };
@@ -171,7 +172,8 @@ std::vector<EvalItem> synth_items(const std::vector<fs::path>& dirs) {
       items.push_back([image = image, file = truth_file] {
         synth::GroundTruth truth = synth::load_truth(file);
         std::string row(synth::to_string(truth.scene)), condition(synth::to_string(truth.condition));
-        return EvalImage{image, std::move(truth), std::move(row), std::move(condition)};
+        fs::path mask = file.parent_path() / truth.mask;
+        return EvalImage{image, std::move(mask), std::move(truth), std::move(row), std::move(condition)};
       });
   return items;
 }
@@ -184,7 +186,7 @@ std::vector<EvalItem> hand_items(const std::vector<fs::path>& dirs, const fs::pa
     for (const fs::path& file : synth::list_hand_truth(dir))
       items.push_back([file, data, row = normal.filename().string()] {
         synth::HandTruth hand = synth::load_hand_truth(file);
-        return EvalImage{data / hand.image, std::move(hand.truth), row, "hand"};
+        return EvalImage{data / hand.image, {}, std::move(hand.truth), row, "hand"};
       });
   }
   return items;
@@ -233,7 +235,9 @@ int cmd_eval_gt(const Args& args) {
       const GtScore score = GtEdges(item.truth, match).score(segments);
       synth::FeatureScore feature_score;
       if (features) {
-        const auto ft = synth::feature_truth(item.truth);
+        // Without its mask (not written, unreadable) every column showing carpet counts.
+        const cv::Mat mask = cv::imread(item.mask.string(), cv::IMREAD_UNCHANGED);
+        const auto ft = synth::feature_truth(item.truth, mask);
         feature_score = synth::score_features(item.truth, ft, detector.features());
       }
       Group& g = groups[{item.row, item.condition}];

@@ -92,9 +92,9 @@ float heading(const Vector2d& v) {
 
 }  // namespace
 
-FeatureTruth feature_truth(const GroundTruth& truth) {
+FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask) {
   FeatureTruth out;
-  out.carpet_top = carpet_top_rows(truth);
+  out.carpet_top = carpet_top_rows(truth, mask);
   const FieldModel field = make_field({.scene = truth.scene, .line_width = truth.line_width});
   const Camera camera(truth.intrinsics, truth.pose);
   const Intrinsics& k = truth.intrinsics;

@@ -17,9 +17,11 @@
 // (inside the frame and within 2 px of the truth's visible "centre circle" polylines).
 //
 // The field boundary: per image column, the first row from the top whose pixel centre sees the
-// carpet (the green, run-off included) through the camera, robots, goals and the SSL wall left
-// out: the outline a convex boundary around the field should follow (a robot in front hides
-// green, which field_boundary.hpp's hull bridges on purpose). A column showing no carpet has -1.
+// carpet (the green, run-off included) through the camera, objects left out: the outline a
+// convex boundary around the field follows (field_boundary.hpp's hull bridges a robot in front on
+// purpose). With the frame's label mask, a column whose top of carpet is hidden by an object (a
+// robot, a goal) is left out too: the frame does not show where its green ends. A column left
+// out, or showing no carpet, has -1.
 //
 // The markings (stripe centre lines, field_features.hpp): each pixel along a detected marking is
 // on its line when it lies within half the true line's width + 1 px of the centreline of a
@@ -28,6 +30,8 @@
 #include <optional>
 #include <span>
 #include <vector>
+
+#include <opencv2/core/mat.hpp>
 
 #include "fieldlines/detect/field_features.hpp"
 #include "fieldlines/synth/truth.hpp"
@@ -49,9 +53,10 @@ struct FeatureTruth {
   std::vector<float> carpet_top;            // per column (the image's width): its row, or -1
 };
 
-FeatureTruth feature_truth(const GroundTruth& truth);
+// `mask`: the frame's label mask (render.hpp's MaskClass, CV_8UC1 of the frame's size) or empty.
+FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask = {});
 // The carpet_top rows alone.
-std::vector<float> carpet_top_rows(const GroundTruth& truth);
+std::vector<float> carpet_top_rows(const GroundTruth& truth, const cv::Mat& mask = {});
 
 struct FeatureScoreParams {
   float max_distance_px = 6;          // a detected junction matches a true one this close
