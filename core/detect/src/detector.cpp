@@ -1,5 +1,6 @@
 #include "fieldlines/detect/detector.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <span>
 #include <string>
@@ -23,6 +24,7 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   StripeWorkspace stripes;
   IntersectionWorkspace intersections;
   std::vector<Segment> pieces;  // the second drawing (find_pieces)
+  std::vector<int> piece_rows;  // per column, the first row it draws from
   StripeWorkspace piece_stripes;
   std::vector<Marking> arcs;    // the pieces that are stripes
   std::vector<Marking> lines;   // those of them not on the circle
@@ -86,9 +88,10 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   const cv::Mat* bgr = normalise(image);
   if (!bgr) return;
   impl_->engine.run(*bgr, params_, out);
-  const bool boundary = find_boundary_ || thresholds_.field_boundary_gate;
-  // Junctions and the circle are made of stripes.
-  const bool stripes = params_.stripes || params_.intersections || params_.centre_circle;
+  const bool pieces = params_.intersections || params_.centre_circle;
+  // The pieces of junctions and the circle are drawn below the boundary; they are stripes.
+  const bool boundary = find_boundary_ || thresholds_.field_boundary_gate || pieces;
+  const bool stripes = params_.stripes || pieces;
   if (thresholds_.light.enabled || boundary || stripes) impl_->field = estimate_field_colour(*bgr);
   std::optional<float> gain;
   if (thresholds_.light.enabled && impl_->field)
@@ -97,7 +100,7 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary);
   label(out, gain, thresholds_, f.field_boundary);
   if (stripes) find_stripes(*bgr, impl_->field, out, params_, impl_->stripes, f.markings);
-  if (params_.intersections || params_.centre_circle) find_pieces(*bgr, gain);
+  if (pieces) find_pieces(*bgr, gain);
 }
 
 // The junctions and the circle need pieces shorter than the detector's minimum length (a line
@@ -107,7 +110,18 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain) {
   constexpr int kPieceScanInterval = 4;  // a short piece needs an anchor on it
   FieldFeatures& f = impl_->features;
   std::vector<Segment>& pieces = impl_->pieces;
-  impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, pieces);
+  // Painted lines lie below the field boundary: anchors above it (walls, the room) would draw
+  // pieces that are no stripes at about a third of this stage's time. A margin keeps lines
+  // along the far edge, which the boundary's blur can cut.
+  std::vector<int>& rows = impl_->piece_rows;
+  rows.clear();
+  if (!f.field_boundary.empty()) {
+    const float margin = std::max(6.f, 0.03f * float(bgr.rows));  // place_of()'s band along it
+    rows.resize(static_cast<std::size_t>(bgr.cols));
+    for (int x = 0; x < bgr.cols; ++x)
+      rows[static_cast<std::size_t>(x)] = static_cast<int>(f.field_boundary.y_at(float(x)) - margin);
+  }
+  impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, rows, pieces);
   // The colour test without its length: shortness is what these pieces are for. (Leaving the
   // colour test to the stripes check alone finds a few more junctions at a fifth more false ones
   // on synthetic fields.)

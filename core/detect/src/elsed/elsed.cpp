@@ -35,13 +35,17 @@ void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& pa
   workers_.run(bands, band);
 }
 
-void ElsedEngine::find_anchors(int scan_interval, int threshold) {
+void ElsedEngine::find_anchors(int scan_interval, int threshold, std::span<const int> first_rows) {
   const int w = maps_.width, h = maps_.height;
   const std::int16_t* g = maps_.mag.data();
+  const bool limited = static_cast<int>(first_rows.size()) == w;
   anchors_.clear();
   // Column by column, as the method scans: the order decides which anchor draws an edge first.
   for (int x = 1; x < w - 1; x += scan_interval) {
-    for (int y = 1; y < h - 1; y += scan_interval) {
+    // The first grid row (1 + k * scan_interval) at or below the column's first row.
+    const int first = limited ? first_rows[static_cast<std::size_t>(x)] : 1;
+    const int y0 = first <= 1 ? 1 : 1 + (first - 1 + scan_interval - 1) / scan_interval * scan_interval;
+    for (int y = y0; y < h - 1; y += scan_interval) {
       const int i = y * w + x;
       if (g[i] == 0) continue;
       // A local maximum across the edge by at least `threshold`.
@@ -88,13 +92,13 @@ void ElsedEngine::draw_and_validate(const cv::Mat& bgr, const DetectorParams& pa
 }
 
 void ElsedEngine::redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,
-                         std::vector<Segment>& out) {
+                         std::span<const int> first_rows, std::vector<Segment>& out) {
   out.clear();
   if (maps_.width != bgr.cols || maps_.height != bgr.rows) return;  // run() has not seen this frame
   // The first drawing's marks would stop the new one at every pixel it owns: back to Free,
   // keeping each pixel's edge direction.
   for (elsed::PixelState& st : maps_.state) st = elsed::with_mark(st, Mark::Free);
-  find_anchors(scan_interval, params.anchor_threshold);
+  find_anchors(scan_interval, params.anchor_threshold, first_rows);
   draw_and_validate(bgr, params, min_line_length, out);
 }
 
