@@ -1,6 +1,7 @@
 #include "fieldlines/detect/detector.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <span>
 #include <string>
@@ -8,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "elsed/elsed.hpp"
+#include "features/field_pixel.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/detect/centre_circle.hpp"
 #include "fieldlines/detect/intersections.hpp"
@@ -110,9 +112,9 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain) {
   constexpr int kPieceScanInterval = 4;  // a short piece needs an anchor on it
   FieldFeatures& f = impl_->features;
   std::vector<Segment>& pieces = impl_->pieces;
-  // Painted lines lie below the field boundary: anchors above it (walls, the room) would draw
-  // pieces that are no stripes at about a third of this stage's time. A margin keeps lines
-  // along the far edge, which the boundary's blur can cut.
+  // Painted lines lie below the field boundary: anchors above it (walls, the room) only draw
+  // pieces that are no stripes. A margin keeps lines along the far edge, which the boundary's
+  // blur can cut.
   std::vector<int>& rows = impl_->piece_rows;
   rows.clear();
   if (!f.field_boundary.empty()) {
@@ -121,7 +123,10 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain) {
     for (int x = 0; x < bgr.cols; ++x)
       rows[static_cast<std::size_t>(x)] = static_cast<int>(f.field_boundary.y_at(float(x)) - margin);
   }
-  impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, rows, pieces);
+  // An anchor with nothing as bright as a stripe's paint beside it (turf texture, shade) draws
+  // no stripe; on real grass most of them are such.
+  const int bright = impl_->field ? static_cast<int>(std::ceil(kPaintContrast * FieldPixel(*impl_->field, {}).field_sum())) : 0;
+  impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, {rows, bright}, pieces);
   // The colour test without its length: shortness is what these pieces are for. (Leaving the
   // colour test to the stripes check alone finds a few more junctions at a fifth more false ones
   // on synthetic fields.)

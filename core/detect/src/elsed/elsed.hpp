@@ -25,15 +25,19 @@ class ElsedEngine {
   const elsed::GradientMaps& gradients() const { return maps_; }
   // After run() on the same frame: draws it again from anchors every `scan_interval` px, keeping
   // segments from `min_line_length` px (the short pieces of curves), into `out` (cleared first).
-  // `first_rows`, one per column or empty: anchors only from that row down (edges drawn from them
-  // may still run above it).
+  // `limits` keeps anchors from where no piece is wanted (edges drawn from the others may still
+  // run there).
+  struct AnchorLimits {
+    std::span<const int> first_rows;  // one per column: anchors from that row down; empty: all
+    int min_bright_sum = 0;           // a pixel this bright (B + G + R) within 5 px across; 0: any
+  };
   void redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,
-              std::span<const int> first_rows, std::vector<Segment>& out);
+              const AnchorLimits& limits, std::vector<Segment>& out);
 
  private:
   void draw_and_validate(const cv::Mat& bgr, const DetectorParams& params, int min_line_length,
                          std::vector<Segment>& out);
-  void find_anchors(int scan_interval, int threshold, std::span<const int> first_rows = {});
+  void find_anchors(int scan_interval, int threshold, const cv::Mat& bgr, const AnchorLimits& limits);
 
   // One pass per thread (each its own scratch rows), all configured alike; passes_[0] runs on
   // the calling thread.
