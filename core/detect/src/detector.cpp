@@ -123,10 +123,11 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain) {
     for (int x = 0; x < bgr.cols; ++x)
       rows[static_cast<std::size_t>(x)] = static_cast<int>(f.field_boundary.y_at(float(x)) - margin);
   }
-  // An anchor with nothing as bright as a stripe's paint beside it (turf texture, shade) draws
-  // no stripe; on real grass most of them are such.
+  // An anchor with no pixel beside it as bright as a stripe's paint and as grey as the field
+  // boundary's paint (turf texture, shade, bright blades of real grass) draws no stripe.
   const int bright = impl_->field ? static_cast<int>(std::ceil(kPaintContrast * FieldPixel(*impl_->field, {}).field_sum())) : 0;
-  impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, {rows, bright}, pieces);
+  const float grey = FieldBoundaryParams{}.paint_chroma;
+  impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, {rows, bright, grey}, pieces);
   // The colour test without its length: shortness is what these pieces are for. (Leaving the
   // colour test to the stripes check alone finds a few more junctions at a fifth more false ones
   // on synthetic fields.)

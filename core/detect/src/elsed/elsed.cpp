@@ -46,7 +46,10 @@ void ElsedEngine::find_anchors(int scan_interval, int threshold, const cv::Mat& 
       const int px = across_rows ? x : x + d, py = across_rows ? y + d : y;
       if (px < 0 || py < 0 || px >= w || py >= h) continue;
       const std::uint8_t* p = bgr.ptr<std::uint8_t>(py) + 3 * px;
-      if (p[0] + p[1] + p[2] >= limits.min_bright_sum) return true;
+      const int sum = p[0] + p[1] + p[2];
+      if (sum < limits.min_bright_sum) continue;
+      // Near grey: |R - sum/3| + |G - sum/3| within max_chroma of the sum (times 3: integers).
+      if (std::abs(3 * p[2] - sum) + std::abs(3 * p[1] - sum) <= limits.max_chroma * 3 * sum) return true;
     }
     return false;
   };
