@@ -97,3 +97,19 @@ for cal in "${conditions[@]}"; do
     echo "$row"
   done
 done
+
+echo
+echo "Recall ceiling on the same synthetic frames (seed 2; every segment called a marking): the"
+echo "built-in detector's and the calibrated detector's (calibrated on the artificial light)."
+echo
+everything "$out/kid-artificial-detector.json" "$out/kid-everything.json"
+echo "| detector | $(printf '%s | ' "${conditions[@]}")"
+echo "|---|$(printf -- '---:|%.0s' "${conditions[@]}")"
+for th in "$out/everything.json" "$out/kid-everything.json"; do
+  row="| $([[ $th == "$out/everything.json" ]] && echo built-in || echo calibrated) |"
+  for c in "${conditions[@]}"; do
+    "$bin" eval --gt "$out/kid-$c-2" --thresholds "$th" --json "$out/score.json" >/dev/null
+    row+=" $(python3 -c "import json; print('%.3f' % json.load(open('$out/score.json'))['total']['marking']['recall'])") |"
+  done
+  echo "$row"
+done

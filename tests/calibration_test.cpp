@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -75,6 +76,47 @@ TEST(Calibration, NeverReadsLabelsAndIgnoresOrder) {
   EXPECT_EQ(fl::calibrated_thresholds(fl::calibrate(shuffled)), reference);
   for (fl::Segment& s : shuffled) s.label = fl::Label::Unlabelled;
   EXPECT_EQ(fl::calibrated_thresholds(fl::calibrate(shuffled)), reference);
+}
+
+// A refused marking class where the frames showed a field: the given thresholds, with the
+// reason as a warning; where none did, the refusal stands.
+TEST(Calibration, AFieldInViewKeepsTheGivenMarkingThresholds) {
+  const KnownField k = known_field(3);
+  const std::vector<fl::Segment> grey(k.segments.begin() + k.markings + k.boundaries, k.segments.end());
+  fl::Thresholds given;
+  given.marking.thresholds = {12.f, 21.f, 33.f};
+  ASSERT_GE(grey.size(), fl::CalibrationParams{}.min_segments);
+  fl::Calibration without_field = fl::calibrate(grey, given);
+  ASSERT_FALSE(without_field.marking.thresholds) << "the test needs a refusal";
+  const std::string reason = without_field.marking.refused;
+  fl::keep_given_markings(without_field, given, 0);
+  EXPECT_FALSE(without_field.marking.thresholds);
+  EXPECT_THROW(fl::calibrated_thresholds(without_field, given), fl::Error);
+
+  fl::Calibration with_field = fl::calibrate(grey, given);
+  fl::keep_given_markings(with_field, given, 2);
+  ASSERT_TRUE(with_field.marking.thresholds);
+  EXPECT_EQ(*with_field.marking.thresholds, given.marking.thresholds);
+  EXPECT_TRUE(with_field.marking.kept_given);
+  EXPECT_TRUE(with_field.marking.refused.empty());
+  EXPECT_NE(with_field.marking.warning.find("kept the given thresholds: " + reason), std::string::npos)
+      << with_field.marking.warning;
+  EXPECT_EQ(fl::calibrated_thresholds(with_field, given).marking.thresholds, given.marking.thresholds);
+  const nlohmann::json p = fl::calibration_provenance(with_field);
+  EXPECT_FALSE(p["fit"]["marking"]["fitted"].get<bool>());
+  EXPECT_TRUE(p["fit"]["marking"]["kept_given"].get<bool>());
+  // A class that fitted is left alone.
+  // Too few segments for any statistics: the refusal stands, field or not.
+  const std::vector<fl::Segment> few(k.segments.begin(), k.segments.begin() + 5);
+  fl::Calibration c_few = fl::calibrate(few, given);
+  fl::keep_given_markings(c_few, given, 2);
+  EXPECT_FALSE(c_few.marking.thresholds);
+  fl::Calibration fitted = fl::calibrate(k.segments, given);
+  ASSERT_TRUE(fitted.marking.thresholds);
+  const fl::ClassThresholds own = *fitted.marking.thresholds;
+  fl::keep_given_markings(fitted, given, 2);
+  EXPECT_EQ(*fitted.marking.thresholds, own);
+  EXPECT_FALSE(fitted.marking.kept_given);
 }
 
 TEST(Calibration, RefusesWhatTheDataDoNotSupport) {

@@ -228,6 +228,17 @@ TEST(DetectAllocations, NoneWithLightAdaptation) {
   expect_warm_detect_allocates_nothing(frames, names, {}, t);
 }
 
+// A gradient threshold per frame (dark_field above every frame's field): the gradient passes
+// take the frame's threshold without being configured again.
+TEST(DetectAllocations, NoneWithDarkField) {
+  const auto [frames, names] = synthetic_frames(4, 5);
+  DetectorParams p;
+  p.dark_field = 765;
+  Thresholds t;
+  t.light = {true, {40, 120, 40}};
+  expect_warm_detect_allocates_nothing(frames, names, p, t);
+}
+
 // Every field feature stage on: the stripes, their intersections, the centre circle.
 DetectorParams all_features() {
   DetectorParams p;

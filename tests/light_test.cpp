@@ -1,6 +1,7 @@
 // Per-frame light adaptation (fieldlines/detect/light.hpp): the field colour of a frame, the
 // gain onto the calibration's exposure, and a darkened frame keeping its markings with it on.
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -82,6 +83,36 @@ TEST(Light, ADarkerFrameKeepsItsMarkingsWithAdaptation) {
   EXPECT_GE(markings(dark_found), bright_markings - 1);
   // On the calibration's own exposure the adaptation changes nothing.
   EXPECT_EQ(markings(fl::LineDetector({}, adapted).detect(bright)), bright_markings);
+}
+
+TEST(Light, ADarkFieldLowersTheGradientThresholdInProportion) {
+  const fl::Rgb field{40, 120, 40};  // R + G + B = 200
+  EXPECT_EQ(fl::adapted_gradient_threshold(30, 0, field), 30) << "off";
+  EXPECT_EQ(fl::adapted_gradient_threshold(30, 200, field), 30) << "as bright as the reference";
+  EXPECT_EQ(fl::adapted_gradient_threshold(30, 100, field), 30) << "brighter: never raised";
+  EXPECT_EQ(fl::adapted_gradient_threshold(30, 400, field), 15);
+  EXPECT_EQ(fl::adapted_gradient_threshold(30, 4000, field), fl::kMinAdaptedGradient) << "floored";
+  EXPECT_EQ(fl::adapted_gradient_threshold(5, 4000, field), 5) << "the floor never raises it";
+  EXPECT_EQ(fl::adapted_gradient_threshold(30, 400, std::nullopt), 30) << "no field in view";
+}
+
+// The detector's own threshold (here one that binds on the synthetic field's sharp edges): at a
+// third of the exposure a frame's edges fall under it and its segments vanish, whatever the
+// classes' thresholds; with dark_field the threshold follows the field and the frame keeps them.
+TEST(Light, ADarkFrameKeepsItsSegmentsWithDarkField) {
+  const cv::Mat bright = fl::test::synthetic_field(640, 480, 3);
+  cv::Mat dark;
+  bright.convertTo(dark, -1, 0.3);
+  fl::DetectorParams p;
+  p.gradient_threshold = 200;
+  const std::size_t at_full = fl::LineDetector(p).detect(bright).size();
+  ASSERT_GE(at_full, 4u);
+  ASSERT_LE(fl::LineDetector(p).detect(dark).size(), at_full / 2) << "the test needs a binding threshold";
+  const fl::Rgb field = *fl::estimate_field_colour(bright);
+  p.dark_field = static_cast<double>(field[0]) + field[1] + field[2];
+  fl::LineDetector adapting(p);
+  EXPECT_EQ(adapting.detect(bright).size(), at_full) << "a field as bright as dark_field keeps the threshold";
+  EXPECT_GE(adapting.detect(dark).size(), at_full - 1);
 }
 
 TEST(Light, ThresholdsJsonCarriesItOnlyWhenOn) {

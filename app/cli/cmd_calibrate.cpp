@@ -205,9 +205,10 @@ void show_class(const char* name, const ClassCalibration& c, const ClassThreshol
     std::printf("%-9s disabled: %s\n", name, c.refused.c_str());
     return;
   }
-  std::printf("%-9s min projection %8.3f  max angle %7.3f deg  min length %8.3f"
-              "   (mode %.2f +- %.2f deg, %.0f segments)\n",
-              name, t.min_projection, t.max_angle_deg, t.min_length, c.mean_deg, c.sd_deg, c.class_mass);
+  std::printf("%-9s min projection %8.3f  max angle %7.3f deg  min length %8.3f", name, t.min_projection,
+              t.max_angle_deg, t.min_length);
+  if (c.kept_given) std::printf("   (the given thresholds)\n");
+  else std::printf("   (mode %.2f +- %.2f deg, %.0f segments)\n", c.mean_deg, c.sd_deg, c.class_mass);
   if (!c.warning.empty()) std::printf("%-9s warning: %s\n", "", c.warning.c_str());
 }
 
@@ -234,7 +235,8 @@ int cmd_calibrate(const Args& args) {
   const nlohmann::json& detector_report = venue.provenance;
   const Thresholds start = in.data.image_settings(config.thresholds, !a.flag("--no-light-adaptation"));
   const auto t1 = std::chrono::steady_clock::now();
-  const Calibration fit = calibrate(in.data.segments(), start, {}, in.data.boundary_candidates());
+  Calibration fit = calibrate(in.data.segments(), start, {}, in.data.boundary_candidates());
+  keep_given_markings(fit, start, in.data.frames_with_field());
   const double fit_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
   const double gather_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   nlohmann::json p = calibration_provenance(fit);

@@ -21,6 +21,8 @@ static_assert(static_cast<int>(studio::Key::Left) == GLFW_KEY_LEFT && static_cas
 static_assert(static_cast<int>(studio::Key::F1) == GLFW_KEY_F1 && static_cast<int>(studio::Key::F6) == GLFW_KEY_F6);
 static_assert(static_cast<int>(studio::Key::Enter) == GLFW_KEY_ENTER && static_cast<int>(studio::Key::Tab) == GLFW_KEY_TAB);
 static_assert(static_cast<int>(studio::Key::P) == GLFW_KEY_P && static_cast<int>(studio::Key::Space) == GLFW_KEY_SPACE);
+static_assert(static_cast<int>(studio::Key::G) == GLFW_KEY_G && static_cast<int>(studio::Key::I) == GLFW_KEY_I);
+static_assert(static_cast<int>(studio::Key::O) == GLFW_KEY_O && static_cast<int>(studio::Key::S) == GLFW_KEY_S);
 
 void run_shortcuts(std::span<const KeyPress> keys, studio::StudioController& controller, studio::UiState& ui) {
   if (ImGui::GetIO().WantTextInput) return;

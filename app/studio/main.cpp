@@ -96,6 +96,10 @@ class StateWriter {
   void update(const studio::StudioController& c, const studio::UiState& ui) {
     if (path_.empty()) return;
     const auto& view = ui.image_view.view;
+    nlohmann::json layers = nlohmann::json::array();  // the feature layers drawn, by name
+    for (const studio::FeatureLayer l : studio::kFeatureLayers)
+      if (ui.image_view.settings.features.on(l)) layers.push_back(studio::feature_layer_name(l));
+    const FieldFeatures& f = c.field_features();
     const nlohmann::json state{{"scale", view.scale()},
                                {"offset", {view.offset().x, view.offset().y}},
                                {"image", c.current()},
@@ -109,7 +113,12 @@ class StateWriter {
                                {"to_review", c.to_review()},
                                {"auto_training", c.auto_train_busy()},
                                {"image_error", c.image_error()},
-                               {"text_input", ImGui::GetIO().WantTextInput}};
+                               {"text_input", ImGui::GetIO().WantTextInput},
+                               {"feature_layers", layers},
+                               {"features", {{"stripes", f.markings.size()},
+                                             {"intersections", f.intersections.size()},
+                                             {"ellipses", f.ellipses.size()},
+                                             {"boundary_points", f.field_boundary.points.size()}}}};
     std::string text = state.dump();
     if (text == last_) return;
     write_file_atomically(path_, text + "\n");
@@ -201,6 +210,10 @@ int run(const studio::StudioArgs& args) {
   };
   if (start.video.empty()) {
     open_session(std::move(start.opened));
+    if (bench && args.input.empty()) {  // the synthetic scene: its features, every layer drawn
+      session->set_field_features(0, studio::bench_scene_features());
+      if (args.bench_features) ui.image_view.settings.features = studio::FeatureLayers::all();
+    }
   } else {
     import = std::make_unique<studio::VideoImport>(start.video, args.video_every);
   }

@@ -7,11 +7,17 @@
 
 namespace fieldlines::studio {
 
+DetectorParams with_feature_stages(DetectorParams params) {
+  params.stripes = params.intersections = params.centre_circle = true;
+  return params;
+}
+
 void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, const Thresholds& thresholds) {
   total_ = items.size();
   done_ = 0;
   job_.start([items = std::move(items), params, thresholds](std::stop_token stop, const auto& report) {
-    LineDetector detector(params, thresholds);  // throws on bad parameters: the job's error
+    LineDetector detector(with_feature_stages(params), thresholds);  // throws on bad parameters: the job's error
+    detector.set_find_field_boundary(true);
     std::size_t processed = 0;
     for (const Item& item : items) {
       if (stop.stop_requested()) break;
@@ -22,6 +28,7 @@ void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, 
         const auto t0 = std::chrono::steady_clock::now();
         detector.detect(image, r.segments);
         r.detect_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        r.features = detector.features();
       } catch (const std::exception& e) {
         r.error = e.what();  // this image only; the others go on
       }

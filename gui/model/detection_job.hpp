@@ -2,6 +2,13 @@
 // Detects segments in many images as a background Job (gui/model/job.hpp), one LineDetector
 // reused: each image's result is a progress message as it finishes; the job fails as a whole
 // only when it cannot start (bad detector parameters).
+//
+// Every feature stage runs (with_feature_stages), so each result also holds the frame's field
+// features for the image view. The stages relabel the detector's segments (the stripes check
+// makes non-stripe markings none) but never move, add or drop one, and the studio takes only
+// their geometry and colour gradients: ProjectDetection clears their labels, and predictions
+// are the thresholds' classify() of the cached features. So the studio's segments, labels and
+// predictions are the same with the stages on as off (tests/studio/project_detection_test.cpp).
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -15,10 +22,15 @@ namespace fieldlines::studio {
 
 struct DetectionResult {
   std::size_t image = 0;          // the caller's index
-  std::vector<Segment> segments;  // labels as predicted by the detector's thresholds
-  double detect_ms = 0;           // detector time only (not file loading)
+  std::vector<Segment> segments;  // labels as the detector's thresholds and stripes check set them
+  FieldFeatures features;         // the frame's field features, every stage on
+  double detect_ms = 0;           // detector time only (not file loading), feature stages included
   std::string error;              // non-empty when this image could not be loaded or detected
 };
+
+// `params` with every field feature stage on (stripes, intersections, centre circle), as
+// `fieldlines detect --features` runs them; the rest unchanged.
+DetectorParams with_feature_stages(DetectorParams params);
 
 class DetectionJob {
  public:
@@ -26,7 +38,8 @@ class DetectionJob {
     std::size_t image;
     std::filesystem::path path;
   };
-  // Starts on a worker thread; a running job is cancelled and joined first.
+  // Starts on a worker thread; a running job is cancelled and joined first. The detector runs
+  // with_feature_stages(params) and finds the field boundary too.
   void start(std::vector<Item> items, const DetectorParams& params, const Thresholds& thresholds);
   void cancel() { job_.cancel(); }
   bool running() const { return job_.running(); }

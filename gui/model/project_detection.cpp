@@ -33,6 +33,8 @@ const std::vector<std::size_t>& ProjectDetection::poll(Project& project) {
   for (DetectionResult& r : job_.poll()) {
     errors_.resize(project.images.size());
     errors_[r.image] = r.error;
+    features_.resize(project.images.size());
+    features_[r.image] = std::move(r.features);  // empty when it failed
     if (!r.error.empty()) {
       report_.failed.emplace_back(r.image, r.error);
       continue;
@@ -53,6 +55,16 @@ const std::vector<std::size_t>& ProjectDetection::poll(Project& project) {
 const std::string& ProjectDetection::error(std::size_t image) const {
   static const std::string none;
   return image < errors_.size() ? errors_[image] : none;
+}
+
+const FieldFeatures& ProjectDetection::features(std::size_t image) const {
+  static const FieldFeatures none;
+  return image < features_.size() ? features_[image] : none;
+}
+
+void ProjectDetection::set_features(std::size_t image, FieldFeatures features) {
+  if (image >= features_.size()) features_.resize(image + 1);
+  features_[image] = std::move(features);
 }
 
 }  // namespace fieldlines::studio

@@ -1,7 +1,8 @@
 #pragma once
 // Background detection of a project's images as the studio tracks it: the job, what the runs
 // since the last start did (DetectionReport), the reason each image's last detection failed,
-// and taking finished images into the project with their labels re-attached by geometry.
+// and taking finished images into the project with their labels re-attached by geometry. Each
+// detected image's field features are kept here (the project file has no place for them).
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -41,11 +42,16 @@ class ProjectDetection {
   const DetectionReport& report() const { return report_; }
   // The reason the image's last detection failed, or empty.
   const std::string& error(std::size_t image) const;
+  // The field features of the image's last detection; empty before one (or when it failed).
+  const FieldFeatures& features(std::size_t image) const;
+  // Replaces them (a synthetic scene has features but no detection: bench_scene.hpp).
+  void set_features(std::size_t image, FieldFeatures features);
 
  private:
   DetectionJob job_;
   DetectionReport report_;
   std::vector<std::string> errors_;  // per image
+  std::vector<FieldFeatures> features_;  // per image
   std::vector<std::size_t> changed_;  // poll's result, reused
 };
 

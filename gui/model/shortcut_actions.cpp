@@ -28,6 +28,9 @@ void run_shortcut(const Shortcut& shortcut, StudioController& controller, UiStat
     case Action::FocusUncertain:
       if (!controller.focus_most_uncertain()) ui.status_message = "nothing left to review";
       break;
+    case Action::ToggleFeatureLayer:
+      if (shortcut.layer != FeatureLayer::Count) ui.image_view.settings.features.toggle(shortcut.layer);
+      break;
     case Action::Undo: controller.undo(); break;
     case Action::Redo: controller.redo(); break;
     case Action::ToggleTraining:

@@ -8,13 +8,16 @@
 #include <string>
 #include <string_view>
 
+#include "gui/model/feature_layers.hpp"
+
 namespace fieldlines::studio {
 
 // Key codes are GLFW's (glfw3.h: printable keys are their upper-case ASCII), so the window
 // passes its codes through unchanged; app/studio/key_input.cpp checks them against glfw3.h.
 enum class Key : int {
   None = 0,  // a mouse input: handled by the image view, listed for the help
-  B = 'B', C = 'C', E = 'E', F = 'F', M = 'M', N = 'N', P = 'P', Q = 'Q', T = 'T', Y = 'Y', Z = 'Z',
+  B = 'B', C = 'C', E = 'E', F = 'F', G = 'G', I = 'I', M = 'M', N = 'N', O = 'O', P = 'P', Q = 'Q', S = 'S', T = 'T',
+  Y = 'Y', Z = 'Z',
   Space = ' ',
   Enter = 257, Tab = 258, Right = 262, Left = 263,
   F1 = 290, F2, F3, F4, F5, F6,
@@ -31,6 +34,7 @@ enum class Action {
   NextUnderCursor,  // hover the next of the overlapping segments under the cursor
   Fit, PreviousImage, NextImage, NextImageWithErrors,
   Propose, AcceptProposals, FocusUncertain,  // the review loop
+  ToggleFeatureLayer,  // one of the field feature layers (feature_layers.hpp) on or off
   Undo, Redo, ToggleTraining, ShowTab, Quit,
   Pointer,  // a mouse input (no key)
 };
@@ -42,6 +46,7 @@ struct Shortcut {
   std::string_view pointer = {};  // the mouse input's name, for Action::Pointer
   int tab = -1;                   // for ShowTab: 0 Images .. 5 Export
   bool repeats = false;           // acts on auto-repeat while held (navigation only)
+  FeatureLayer layer = FeatureLayer::Count;  // for ToggleFeatureLayer
 };
 
 // Every input, in the order the help and the docs list them.

@@ -20,7 +20,7 @@ int parse_int(const std::string& text, const std::string& option, int lo, int hi
 
 const char* studio_usage() {
   return "usage: fieldlines-studio [PROJECT.json | IMAGE_FOLDER | VIDEO | --last] [--every N] [--window-size WxH]\n"
-         "                         [--no-auto-train] [--bench-frames N] [--version]\n"
+         "                         [--no-auto-train] [--bench-frames N [--bench-no-features]] [--version]\n"
          "  PROJECT.json     a studio project (labels are autosaved into it)\n"
          "  IMAGE_FOLDER     images to label; creates IMAGE_FOLDER/fieldlines-project.json\n"
          "  VIDEO            mp4/avi/mkv/mov/webm: every N-th frame (--every, default 10) goes to\n"
@@ -31,7 +31,9 @@ const char* studio_usage() {
          "  --no-auto-train  start with live retraining off (it retrains both classes after every\n"
          "                   label change; the Train tab's checkbox toggles it)\n"
          "  --bench-frames N render N frames as fast as possible, print the median frame time, exit\n"
-         "                   (without a project: a 640x480 image with 300 segments)\n"
+         "                   (without a project: a 640x480 image with 300 segments and field\n"
+         "                   features of every kind, all four layers drawn)\n"
+         "  --bench-no-features  the same scene with no feature layer drawn, for comparison\n"
          "  --state-file F   write the view transform, hovered segment and save count to F as JSON\n"
          "                   whenever they change (for automated UI tests)\n"
          "examples:\n"
@@ -57,6 +59,8 @@ StudioArgs parse_studio_args(const std::vector<std::string>& args) {
       out.last = true;
     } else if (a == "--bench-frames") {
       out.bench_frames = parse_int(value(), a, 1, 1'000'000);
+    } else if (a == "--bench-no-features") {
+      out.bench_features = false;
     } else if (a == "--window-size") {
       const std::string& v = value();
       const auto x = v.find('x');
@@ -77,6 +81,7 @@ StudioArgs parse_studio_args(const std::vector<std::string>& args) {
       throw Error("only one project or folder can be opened, got '" + out.input + "' and '" + a + "'");
     }
   }
+  if (!out.bench_features && out.bench_frames == 0) throw Error("--bench-no-features: only with --bench-frames");
   if (out.last && !out.input.empty()) throw Error("--last reopens the most recent project; do not name one too");
   return out;
 }

@@ -11,6 +11,7 @@ struct StudioArgs {
   bool last = false;          // reopen the most recent project instead of the demo
   int window_width = 1280, window_height = 800;
   int bench_frames = 0;       // > 0: render this many frames, print the median frame time, exit
+  bool bench_features = true; // the bench scene's field features drawn (--bench-no-features: not)
   int video_every = 10;       // a video opens as every n-th frame
   bool auto_train = true;     // retrain after every label change (--no-auto-train: off)
   std::string state_file;     // automation: write the UI state (view, hover, saves) here as JSON

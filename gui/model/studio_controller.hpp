@@ -142,6 +142,12 @@ class StudioController {
   const DetectionReport& detection_report() const { return detection_.report(); }
   // The reason the image's last detection failed, or empty.
   const std::string& detection_error(std::size_t index) const { return detection_.error(index); }
+  // The current image's field features from its last detection here (detection_job.hpp); empty
+  // for an image not detected since the project was opened.
+  const FieldFeatures& field_features() const { return detection_.features(current_); }
+  void set_field_features(std::size_t image, FieldFeatures features) {
+    detection_.set_features(image, std::move(features));
+  }
   // Detector time of the current image (from the project), 0 when not detected here.
   double current_detect_ms() const;
   // Mean detector time over the project's detected images.

@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "gui/model/feature_overlay.hpp"
 #include "gui/model/hit_test.hpp"
 #include "gui/model/shortcuts.hpp"
 
@@ -19,6 +20,27 @@ ImVec2 im(Vec2 v) { return {v.x, v.y}; }
 Vec2 vec(ImVec2 v) { return {v.x, v.y}; }
 ImU32 colour(studio::Rgba c) { return IM_COL32(c.r, c.g, c.b, c.a); }
 constexpr float kClickSlop = 4;  // pixels a press may move and still count as a click
+
+// The field features over the segments (gui/model/feature_overlay.hpp has what and why).
+void draw_features(ImDrawList* draw, const studio::FeatureDrawing& d) {
+  for (const studio::FeatureLine& l : d.lines) draw_styled_line(draw, im(l.a), im(l.b), l.style);
+  for (const studio::FeatureRing& r : d.rings) {
+    draw->AddCircle(im(r.centre), r.radius, colour(studio::kOutline), 0, r.style.thickness + studio::kOutlineExtra);
+    draw->AddCircle(im(r.centre), r.radius, colour(r.style.colour), 0, r.style.thickness);
+  }
+  // The type letter half as large again as the UI's text, so L, T and X tell apart at a glance.
+  ImFont* font = ImGui::GetFont();
+  const float height = 1.5f * ImGui::GetFontSize();
+  for (const studio::FeatureLetter& t : d.letters) {
+    const char text[2] = {t.letter, 0};
+    const ImVec2 at{t.at.x, t.at.y - height};
+    // The outline rule for text: the letter in the outline colour one pixel around, then on top.
+    for (const ImVec2 o : {ImVec2{-1, -1}, ImVec2{1, -1}, ImVec2{-1, 1}, ImVec2{1, 1}}) {
+      draw->AddText(font, height, {at.x + o.x, at.y + o.y}, colour(studio::kOutline), text);
+    }
+    draw->AddText(font, height, at, colour(t.colour), text);
+  }
+}
 }  // namespace
 
 void draw_styled_line(ImDrawList* draw, ImVec2 a, ImVec2 b, const studio::SegmentStyle& style) {
@@ -145,6 +167,12 @@ void draw_image_view(studio::StudioController& controller, studio::CanvasState& 
       style.thickness = state.settings.segment_width(style.thickness, state.view.scale());
       draw_styled_line(draw, im(s.a), im(s.b), style);
     }
+  }
+  if (state.settings.features.any()) {
+    static studio::FeatureDrawing features;  // UI thread only; reused so a frame allocates nothing
+    studio::build_feature_drawing(controller.field_features(), state.settings.features, state.view, state.settings,
+                                  features);
+    draw_features(draw, features);
   }
   if (const auto h = controller.hovered()) {
     // Highlight, unmistakable over any background and among overlapping segments: a black then a

@@ -32,6 +32,31 @@ void draw_legend(studio::OverlayMode mode) {
   }
 }
 
+namespace {
+// The four field feature layers (feature_layers.hpp), each captioned with its key.
+void draw_feature_toggles(const studio::StudioController& controller, studio::FeatureLayers& layers) {
+  ImGui::TextUnformatted("Field features on screen:");
+  for (const studio::Shortcut& s : studio::shortcuts()) {
+    if (s.action != studio::Action::ToggleFeatureLayer) continue;
+    bool on = layers.on(s.layer);
+    const std::string caption = std::string(studio::feature_layer_name(s.layer)) + " (" + studio::input_name(s) + ")";
+    if (ImGui::Checkbox(caption.c_str(), &on)) layers.set(s.layer, on);
+    if (s.layer == studio::FeatureLayer::Intersections || s.layer == studio::FeatureLayer::Stripes) continue;
+    ImGui::SameLine();  // two per row
+  }
+  const FieldFeatures& f = controller.field_features();
+  if (!layers.any()) return;
+  ImGui::PushTextWrapPos(0);  // wrap at the panel's edge
+  if (f.markings.empty() && f.intersections.empty() && f.ellipses.empty() && f.field_boundary.empty()) {
+    ImGui::TextDisabled("none for this image: features come with a detection here (Thresholds tab, Re-detect all)");
+  } else {
+    ImGui::TextDisabled("this image: %zu stripes, %zu junctions, %zu circles, a boundary of %zu points",
+                        f.markings.size(), f.intersections.size(), f.ellipses.size(), f.field_boundary.points.size());
+  }
+  ImGui::PopTextWrapPos();
+}
+}  // namespace
+
 void draw_label_panel(studio::StudioController& controller, UiState& ui) {
   ImGui::TextUnformatted("Left click / rectangle labels as:");
   int brush = static_cast<int>(ui.image_view.brush);
@@ -75,6 +100,8 @@ void draw_label_panel(studio::StudioController& controller, UiState& ui) {
     ImGui::SameLine();
     ImGui::TextDisabled("%zu px in %zu places", m.pixels, m.blobs);
   }
+
+  draw_feature_toggles(controller, ui.image_view.settings.features);
 
   ImGui::Separator();
   if (ImGui::Button("Label the rest as none")) controller.label_rest_as_none();

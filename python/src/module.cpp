@@ -218,6 +218,7 @@ py::dict calibrate_images(const py::object& images, const py::object& thresholds
     for (const cv::Mat& view : views) inputs.add_image(detector, view);
     adapted = inputs.image_settings(start.thresholds, true);
     fit = calibrate(inputs.segments(), adapted, {}, inputs.boundary_candidates());
+    keep_given_markings(fit, adapted, inputs.frames_with_field());
   }
   try {
     calibrated = calibrated_thresholds(fit, adapted);

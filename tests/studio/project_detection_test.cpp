@@ -6,7 +6,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "fieldlines/data/project.hpp"
+#include "fieldlines/data/image_io.hpp"
 #include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/detect/detector.hpp"
 #include "fixtures.hpp"
 #include "gui/model/project_detection.hpp"
 
@@ -76,4 +78,52 @@ TEST(ProjectDetection, ReDetectingAllKeepsTheLabelsThatStillMatch) {
   EXPECT_EQ(f.project.images[0].segments[0].label, Label::Marking);
   EXPECT_GE(detection.report().labels_kept, 1u);
   EXPECT_NE(detection.report().summary().find("labels kept"), std::string::npos) << detection.report().summary();
+}
+
+TEST(ProjectDetection, KeepsEachImagesFieldFeaturesAndTheSameSegmentsAsWithoutThem) {
+  Folder f;
+  // A crossing, so the stripes and their junction have something to find.
+  fieldlines::Segment across, down;
+  across.x0 = 20, across.y0 = 100, across.x1 = 300, across.y1 = 120;
+  down.x0 = 150, down.y0 = 40, down.x1 = 170, down.y1 = 230;
+  cv::imwrite((f.dir.path() / "good.png").string(), studio_test::field_image(320, 240, {across, down}));
+  EXPECT_EQ(fs::with_feature_stages({}).stripes, true);
+  EXPECT_EQ(fs::with_feature_stages({}).intersections, true);
+  EXPECT_EQ(fs::with_feature_stages({}).centre_circle, true);
+  EXPECT_EQ(fs::with_feature_stages({}).gradient_threshold, fieldlines::DetectorParams{}.gradient_threshold);
+  ASSERT_FALSE(f.project.detector.stripes);  // the project's own detector leaves the stages off
+
+  fs::ProjectDetection detection;
+  EXPECT_TRUE(detection.features(0).markings.empty());  // before any detection: none
+  detection.start(f.project, f.file, false);
+  detection.job().wait();
+  detection.poll(f.project);
+  const fieldlines::FieldFeatures& features = detection.features(0);
+  EXPECT_FALSE(features.markings.empty());
+  EXPECT_FALSE(features.field_boundary.empty());
+  EXPECT_TRUE(detection.features(1).markings.empty());  // bad.png failed: nothing
+  EXPECT_TRUE(detection.features(9).field_boundary.empty());  // past the images: empty, no crash
+
+  // The segments are those the project's detector finds with the stages off: same geometry,
+  // same colour gradients, so the same cached features and predictions; labels all cleared.
+  fieldlines::LineDetector plain(f.project.detector, f.project.thresholds);
+  const std::vector<fieldlines::Segment> expected =
+      plain.detect(fieldlines::load_image(f.dir.path() / "good.png"));
+  const std::vector<fieldlines::Segment>& got = f.project.images[0].segments;
+  ASSERT_EQ(got.size(), expected.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    EXPECT_EQ(got[i].x0, expected[i].x0);
+    EXPECT_EQ(got[i].y0, expected[i].y0);
+    EXPECT_EQ(got[i].x1, expected[i].x1);
+    EXPECT_EQ(got[i].y1, expected[i].y1);
+    EXPECT_EQ(got[i].grad_x, expected[i].grad_x);
+    EXPECT_EQ(got[i].grad_y, expected[i].grad_y);
+    EXPECT_EQ(got[i].saliency, expected[i].saliency);
+    EXPECT_EQ(got[i].label, Label::Unlabelled);
+  }
+
+  fieldlines::FieldFeatures synthetic;
+  synthetic.markings.push_back({1, 2, 3, 4, 5});
+  detection.set_features(5, synthetic);  // an index past the images so far grows the list
+  EXPECT_EQ(detection.features(5).markings.size(), 1u);
 }

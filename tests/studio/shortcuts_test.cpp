@@ -123,3 +123,37 @@ TEST(Shortcuts, LookupAsTheWindowSeesKeys) {
   EXPECT_EQ(fs::key_for(Action::NextImageWithErrors), "E");
   EXPECT_EQ(fs::key_for(Action::Pointer), "");
 }
+
+TEST(Shortcuts, EachFeatureLayerHasOneKeyAndTheLabellingKeysStay) {
+  using fs::FeatureLayer;
+  const std::pair<Key, FeatureLayer> expected[] = {{Key::G, FeatureLayer::FieldBoundary},
+                                                   {Key::I, FeatureLayer::Intersections},
+                                                   {Key::O, FeatureLayer::CentreCircle},
+                                                   {Key::S, FeatureLayer::Stripes}};
+  for (const auto& [key, layer] : expected) {
+    const fs::Shortcut* s = fs::find_shortcut({key});
+    ASSERT_NE(s, nullptr) << static_cast<char>(key);
+    EXPECT_EQ(s->action, Action::ToggleFeatureLayer);
+    EXPECT_EQ(s->layer, layer);
+    EXPECT_EQ(fs::find_shortcut({key}, true), nullptr);  // held: toggles once
+  }
+  int toggles = 0;
+  for (const fs::Shortcut& s : fs::shortcuts()) {
+    if (s.action != Action::ToggleFeatureLayer) {
+      EXPECT_EQ(s.layer, FeatureLayer::Count) << fs::input_name(s);
+      continue;
+    }
+    ++toggles;
+    EXPECT_NE(s.layer, FeatureLayer::Count);
+  }
+  EXPECT_EQ(toggles, 4);
+  const std::pair<Chord, Action> labelling[] = {
+      {{Key::M}, Action::LabelMarking},     {{Key::N}, Action::LabelNone},     {{Key::B}, Action::LabelBoundary},
+      {{Key::P}, Action::Propose},          {{Key::Space}, Action::NextUnderCursor},
+      {{Key::Enter}, Action::AcceptProposals}, {{Key::Tab}, Action::FocusUncertain}};
+  for (const auto& [chord, action] : labelling) {
+    const fs::Shortcut* s = fs::find_shortcut(chord);
+    ASSERT_NE(s, nullptr);
+    EXPECT_EQ(s->action, action);
+  }
+}

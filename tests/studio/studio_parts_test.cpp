@@ -74,6 +74,9 @@ TEST(StudioArgs, ParsesAndRejects) {
   EXPECT_THROW(fs::parse_studio_args({"--window-size", "big"}), fieldlines::Error);
   EXPECT_THROW(fs::parse_studio_args({"--bench-frames", "-3"}), fieldlines::Error);
   EXPECT_THROW(fs::parse_studio_args({"--bench-frames"}), fieldlines::Error);
+  EXPECT_TRUE(a.bench_features);
+  EXPECT_FALSE(fs::parse_studio_args({"--bench-frames", "5", "--bench-no-features"}).bench_features);
+  EXPECT_THROW(fs::parse_studio_args({"--bench-no-features"}), fieldlines::Error);  // nothing to bench
   EXPECT_THROW(fs::parse_studio_args({"--frobnicate"}), fieldlines::Error);
   EXPECT_THROW(fs::parse_studio_args({"a", "b"}), fieldlines::Error);
   EXPECT_TRUE(fs::parse_studio_args({"--last"}).last);

@@ -3,6 +3,7 @@
 // texture must hold (CanvasState::picture_to_upload).
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <vector>
 
 #include "fieldlines/data/project.hpp"
@@ -97,6 +98,30 @@ TEST(ShortcutActions, SpaceReleasesTabsSegmentOnlyWhenItHasAnotherToGoTo) {
   s.press(fs::Action::NextUnderCursor);
   EXPECT_FALSE(canvas.focus.held().has_value());
   EXPECT_EQ(canvas.cycle.update(0, two, segments), 2u);
+}
+
+TEST(ShortcutActions, FeatureKeysToggleTheirLayerAndLeaveLabelsAlone) {
+  Session s;
+  s.controller.set_hovered(0);
+  const Project before = s.controller.project();
+  fs::FeatureLayers expected;
+  for (const fs::FeatureLayer layer : fs::kFeatureLayers) {
+    const fs::Shortcut* key = nullptr;
+    for (const fs::Shortcut& sc : fs::shortcuts())
+      if (sc.action == fs::Action::ToggleFeatureLayer && sc.layer == layer) key = &sc;
+    ASSERT_NE(key, nullptr) << fs::feature_layer_name(layer);
+    fs::run_shortcut(*key, s.controller, s.ui);
+    expected.set(layer, true);
+    EXPECT_EQ(s.ui.image_view.settings.features, expected);
+  }
+  for (const fs::Shortcut& sc : fs::shortcuts())
+    if (sc.action == fs::Action::ToggleFeatureLayer) fs::run_shortcut(sc, s.controller, s.ui);
+  EXPECT_FALSE(s.ui.image_view.settings.features.any());  // pressed again: off
+  EXPECT_EQ(s.controller.hovered(), std::optional<std::size_t>{0});
+  ASSERT_EQ(s.controller.project().images[0].segments.size(), before.images[0].segments.size());
+  for (std::size_t i = 0; i < before.images[0].segments.size(); ++i)
+    EXPECT_EQ(s.controller.project().images[0].segments[i].label, before.images[0].segments[i].label);
+  EXPECT_FALSE(s.controller.can_undo());  // a view change, not an edit
 }
 
 TEST(CanvasState, HandsOutThePictureOncePerChange) {

@@ -12,6 +12,8 @@
 #include <string>
 #include <thread>
 
+#include <opencv2/imgcodecs.hpp>
+
 #include "fieldlines/data/project.hpp"
 #include "x_session.hpp"
 
@@ -107,6 +109,41 @@ TEST_F(StudioKeysWindow, TabKeepsItsSegmentWhileThePointerRestsOnAnother) {
   ASSERT_EQ(run(x("mousemove " + std::to_string(ox + 1) + " " + std::to_string(oy))), 0);
   ASSERT_TRUE(wait_for([&] { return state()["hovered"] == static_cast<long>(*other); }, 10s)) << state().dump();
 
+  ASSERT_EQ(run(x("key ctrl+q")), 0);
+  ASSERT_TRUE(wait_for([&] { return !studio->running(); }, 15s));
+  EXPECT_EQ(studio->exit_code(), 0) << log();
+}
+
+// A folder of one field picture: the studio detects it with the feature stages, and G I O S
+// draw its features over the canvas (the pixels change) and take them off again.
+TEST_F(StudioKeysWindow, FeatureKeysDrawTheDetectedFeaturesAndTakeThemOff) {
+  fieldlines::Segment across, down;
+  across.x0 = 40, across.y0 = 300, across.x1 = 600, across.y1 = 330;
+  down.x0 = 300, down.y0 = 120, down.x1 = 330, down.y1 = 470;
+  const std::filesystem::path folder = dir() / "frames";
+  std::filesystem::create_directories(folder);
+  cv::imwrite((folder / "field.png").string(), studio_test::field_image(640, 480, {across, down}));
+  project_ = folder;
+  auto studio = start_studio();
+  ASSERT_TRUE(studio->running()) << log();
+  ASSERT_TRUE(wait_for([&] { return state()["features"]["stripes"].get<int>() > 0; }, 30s)) << state().dump();
+  EXPECT_TRUE(state()["feature_layers"].empty());  // off until asked for
+  std::this_thread::sleep_for(300ms);
+  const cv::Mat off = cv::imread(screenshot("features_off").string());
+
+  ASSERT_EQ(run(x("mousemove 5 790 key g i o s")), 0);  // the pointer off the canvas: no hover halo
+  ASSERT_TRUE(wait_for([&] { return state()["feature_layers"].size() == 4; }, 10s)) << state().dump();
+  std::this_thread::sleep_for(300ms);
+  const cv::Mat on = cv::imread(screenshot("features_on").string());
+  ASSERT_EQ(on.size(), off.size());
+  // The canvas (left of the side panel) changed where the features are drawn.
+  const cv::Rect canvas(0, 0, 800, 700);
+  cv::Mat diff;
+  cv::absdiff(on(canvas), off(canvas), diff);
+  EXPECT_GT(cv::countNonZero(diff.reshape(1)), 200) << "the features drew nothing";
+
+  ASSERT_EQ(run(x("key g i o s")), 0);
+  ASSERT_TRUE(wait_for([&] { return state()["feature_layers"].empty(); }, 10s)) << state().dump();
   ASSERT_EQ(run(x("key ctrl+q")), 0);
   ASSERT_TRUE(wait_for([&] { return !studio->running(); }, 15s));
   EXPECT_EQ(studio->exit_code(), 0) << log();

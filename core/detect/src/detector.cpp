@@ -31,11 +31,13 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   std::vector<Marking> arcs;    // the pieces that are stripes
   std::vector<Marking> lines;   // those of them not on the circle
   CircleWorkspace circle;
+  DetectorParams frame;  // the parameters with this frame's gradient threshold (dark_field)
 };
 
 LineDetector::LineDetector(DetectorParams params, Thresholds thresholds)
     : params_(std::move(params)), thresholds_(thresholds), impl_(std::make_unique<Impl>()) {
   validate(params_);
+  impl_->frame = params_;
 }
 LineDetector::~LineDetector() = default;
 LineDetector::LineDetector(LineDetector&&) noexcept = default;
@@ -89,12 +91,15 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   impl_->features.clear();
   const cv::Mat* bgr = normalise(image);
   if (!bgr) return;
-  impl_->engine.run(*bgr, params_, out);
   const bool pieces = params_.intersections || params_.centre_circle;
   // The pieces of junctions and the circle are drawn below the boundary; they are stripes.
   const bool boundary = find_boundary_ || thresholds_.field_boundary_gate || pieces;
   const bool stripes = params_.stripes || pieces;
-  if (thresholds_.light.enabled || boundary || stripes) impl_->field = estimate_field_colour(*bgr);
+  if (thresholds_.light.enabled || boundary || stripes || params_.dark_field > 0)
+    impl_->field = estimate_field_colour(*bgr);
+  impl_->frame.gradient_threshold =
+      adapted_gradient_threshold(params_.gradient_threshold, params_.dark_field, impl_->field);
+  impl_->engine.run(*bgr, impl_->frame, out);
   std::optional<float> gain;
   if (thresholds_.light.enabled && impl_->field)
     gain = light_gain(thresholds_.light.reference_field, *impl_->field);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 namespace fieldlines {
@@ -45,6 +46,14 @@ std::optional<Rgb> estimate_field_colour(const cv::Mat& bgr8, const FieldColourP
 float light_gain(const Rgb& reference, const Rgb& frame) {
   const float r = reference[0] + reference[1] + reference[2], f = frame[0] + frame[1] + frame[2];
   return std::clamp(std::max(r, 1.f) / std::max(f, 1.f), 0.25f, 4.f);
+}
+
+int adapted_gradient_threshold(int threshold, double dark_field, const std::optional<Rgb>& field) {
+  if (!(dark_field > 0) || !field) return threshold;
+  const double brightness = static_cast<double>((*field)[0]) + (*field)[1] + (*field)[2];
+  if (brightness >= dark_field) return threshold;
+  const auto scaled = static_cast<int>(std::lround(threshold * brightness / dark_field));
+  return std::clamp(scaled, std::min(threshold, kMinAdaptedGradient), threshold);
 }
 
 void apply_light_gain(std::span<Segment> segments, float gain) {

@@ -127,8 +127,9 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   if (!m || m->class_mass < min_mass) {
     out.class_mass = m ? m->class_mass : 0;
     out.refused = std::string(no_mode);
-    if (m) out.refused += " (" + count_text(m->class_mass) + " edges of its colours, at least " +
-                          count_text(min_mass) + " needed)";
+    // Rounded down: a mass of 7.6 is not the 8 needed.
+    if (m) out.refused += " (" + std::to_string(static_cast<long>(std::floor(m->class_mass))) +
+                          " edges of its colours, at least " + count_text(min_mass) + " needed)";
     out.refused += what_to_do;
     return out;
   }
@@ -246,6 +247,16 @@ Calibration calibrate(std::span<const Segment> segments, const Thresholds& start
   return out;
 }
 
+void keep_given_markings(Calibration& c, const Thresholds& start, std::size_t frames_with_field,
+                         const CalibrationParams& params) {
+  ClassCalibration& m = c.marking;
+  if (m.thresholds || frames_with_field == 0 || c.segments < params.min_segments) return;
+  m.thresholds = start.marking.thresholds;
+  m.kept_given = true;
+  m.warning = "kept the given thresholds: " + m.refused;
+  m.refused.clear();
+}
+
 ClassThresholds disabled_class() { return {1000.f, 0.f, 100000.f}; }
 
 Thresholds calibrated_thresholds(const Calibration& c, const Thresholds& start) {
@@ -264,7 +275,7 @@ nlohmann::json calibration_provenance(const Calibration& c) {
                           {"used_contrast", k.used_contrast}, {"contrast_mean", k.contrast_mean}, {"grey_contrast_mean", k.grey_contrast_mean},
                           {"expected_precision", k.expected_precision}, {"expected_recall", k.expected_recall},
                           {"fit_rows", k.fit_rows}, {"iterations", k.iterations},
-                          {"fitted", k.thresholds.has_value()},
+                          {"fitted", k.thresholds.has_value() && !k.kept_given}, {"kept_given", k.kept_given},
                           {"refused", k.thresholds ? nlohmann::json(nullptr) : nlohmann::json(k.refused)},
                           {"warning", k.warning.empty() ? nlohmann::json(nullptr) : nlohmann::json(k.warning)}};
   };

@@ -12,8 +12,7 @@ using elsed::Pixel;
 
 void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& params) {
   const auto threads = static_cast<std::size_t>(params.threads);
-  if (passes_.size() != threads || params.gaussian_kernel != pass_kernel_ || params.gaussian_sigma != pass_sigma_ ||
-      params.gradient_threshold != pass_threshold_) {
+  if (passes_.size() != threads || params.gaussian_kernel != pass_kernel_ || params.gaussian_sigma != pass_sigma_) {
     passes_.resize(threads);
     for (elsed::GradientPass& p : passes_)
       p.configure(params.gaussian_kernel, params.gaussian_sigma, params.gradient_threshold);
@@ -21,6 +20,10 @@ void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& pa
     pass_sigma_ = params.gaussian_sigma;
     pass_threshold_ = params.gradient_threshold;
     if (threads == 1) workers_.resize(0);
+  }
+  if (params.gradient_threshold != pass_threshold_) {  // a dark field's frame (light.hpp)
+    for (elsed::GradientPass& p : passes_) p.set_threshold(params.gradient_threshold);
+    pass_threshold_ = params.gradient_threshold;
   }
   const int h = bgr.rows, bands = passes_.front().band_count(h, params.threads);
   if (bands == 1) {

@@ -26,6 +26,7 @@ class GradientPass {
  public:
   // Allocates the kernel; call when the parameters change, not per frame.
   void configure(int gaussian_kernel, double gaussian_sigma, int gradient_threshold);
+  void set_threshold(int gradient_threshold) { threshold_ = gradient_threshold; }  // per frame: no kernel
   // bgr: 8-bit, 3 channels, at least 1x1. Sizes `maps` (by capacity) and fills all of it.
   void run(const cv::Mat& bgr, GradientMaps& maps);
   // Rows [row_begin, row_end) of `maps`, already sized for bgr (size_maps): the same bits as the

@@ -47,6 +47,10 @@ struct DetectorParams {
   // intersections on, the frame is drawn a second time for pieces from piece_length px.
   bool centre_circle = false;
   int piece_length = 10;
+  // A field darker than this (R + G + B of its colour, light.hpp) lowers the gradient threshold
+  // in proportion for that frame, so a dim frame keeps the edges a bright one has; 0: off, the
+  // method's fixed threshold.
+  double dark_field = 0;
   bool operator==(const DetectorParams&) const = default;
 };
 
@@ -72,7 +76,7 @@ struct ParamSpec {
   bool in_files = true;     // written into and read from thresholds and project files
 };
 
-inline constexpr std::array<ParamSpec, 22> kDetectorParamSpecs{{
+inline constexpr std::array<ParamSpec, 23> kDetectorParamSpecs{{
     {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
      .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
     {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
@@ -119,6 +123,9 @@ inline constexpr std::array<ParamSpec, 22> kDetectorParamSpecs{{
      .help = "fit the centre circle to short stripe pieces of a second drawing (runs the stripes stage too)"},
     {.name = "piece_length", .member = &DetectorParams::piece_length, .range = {3, 10000},
      .unit = "px", .help = "shortest piece of the second drawing (intersections, centre circle)", .slider = {5, 60}},
+    {.name = "dark_field", .member = &DetectorParams::dark_field, .range = {0, 765},
+     .help = "a field darker than this (R + G + B) lowers the gradient threshold in proportion; 0: off",
+     .slider = {0, 765}},
 }};
 
 // The spec named `name`, or nullptr.

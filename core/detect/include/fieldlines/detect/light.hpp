@@ -47,4 +47,13 @@ float light_gain(const Rgb& reference, const Rgb& frame);
 // Scales every segment's gradients by the gain.
 void apply_light_gain(std::span<Segment> segments, float gain);
 
+// The detector's gradient threshold for a frame whose field is `field`: `threshold` times the
+// field's brightness (R + G + B) over `dark_field` when it is darker, never below
+// kMinAdaptedGradient (sensor noise on any field); `threshold` when dark_field is 0 (off), the
+// field is at least that bright, or the frame shows no field. Edge contrast scales with the
+// exposure, so a dim frame then keeps the edges the threshold keeps on a bright one; the classes'
+// tests see the frame's gradients scaled by light_gain() as before.
+inline constexpr int kMinAdaptedGradient = 8;
+int adapted_gradient_threshold(int threshold, double dark_field, const std::optional<Rgb>& field);
+
 }  // namespace fieldlines

@@ -69,6 +69,7 @@ struct ClassCalibration {
   double grey_contrast_mean = 0;              // the grey edges' typical projection
   double expected_precision = 0;              // of the box, under the fitted mixture
   double expected_recall = 0;
+  bool kept_given = false;                    // refused, but the given thresholds kept (keep_given_markings)
   std::size_t fit_rows = 0;                   // segments in the fit window
   int iterations = 0;
 };
@@ -89,6 +90,15 @@ Calibration calibrate(std::span<const Segment> segments, const Thresholds& start
 // boundary wall does not mark furniture as one.
 ClassThresholds disabled_class();
 
+// Where the frames showed a field (`frames_with_field` > 0) and enough segments to fit on, but
+// the marking class was refused (too few of its edges, or none told from grey ones: a dim or
+// distant view of the lines), the given marking thresholds are kept and the refusal becomes a
+// warning that says so and what to do: a venue then gets a file that marks what the given one
+// did, instead of none. Without a field in view (pictures without green, segments from a file)
+// or with too few segments for any statistics, the refusal stands.
+void keep_given_markings(Calibration& calibration, const Thresholds& start, std::size_t frames_with_field,
+                         const CalibrationParams& params = {});
+
 // `start` with each fitted class replaced, refused ones disabled. Throws fieldlines::Error
 // naming the reason when the marking class was refused: without it there is nothing to write.
 Thresholds calibrated_thresholds(const Calibration& calibration, const Thresholds& start = {});
@@ -96,7 +106,7 @@ Thresholds calibrated_thresholds(const Calibration& calibration, const Threshold
 // What every face (CLI, Python) records of a fit in the thresholds file's provenance:
 // {"method": "label-free", "contrast_floor", "fit": {"marking": {...}, "boundary": {...}}}, each
 // class with its mode, spread, mass, separation, contrasts, expected precision and recall, rows,
-// iterations, "fitted", "refused" and "warning".
+// iterations, "fitted", "kept_given", "refused" and "warning".
 nlohmann::json calibration_provenance(const Calibration& calibration);
 
 }  // namespace fieldlines
