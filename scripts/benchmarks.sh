@@ -187,7 +187,10 @@ for set_id, title, label, folder, options in sets:
     t = j["targets"]
     doc_lines += ["", f"Targets, on the worse order: fieldlines/edlines = {target(t['edlines'])}; "
                   f"fieldlines/floor = {target(t['floor'])}. Our fused gradient pass against OpenCV's "
-                  f"blur + Sobel: gradients/floor = {worse(j['gradients_over_floor'])}.", ""]
+                  f"blur + Sobel: gradients/floor = {worse(j['gradients_over_floor'])}."
+                  + (f" Every field feature on (stripes, junctions, centre circle, field boundary) against none: "
+                     f"features/fieldlines = {worse(j['features_over_plain'])} (target <= 1.2)."
+                     if "features_over_plain" in j else ""), ""]
     ours = rows["fieldlines"]
     readme_speed.append(
         f"| {label} ({j['images']} images) | {ours['block']['median_ms']:.2f} / {ours['interleaved']['median_ms']:.2f} | "

@@ -88,8 +88,8 @@ TEST_F(CliBench, JsonListsAllSevenRowsInBothOrders) {
     else EXPECT_GT(segments, 0) << d;
   }
   EXPECT_EQ(names,
-            (std::vector<std::string>{"fieldlines", "fieldlines+light", "fieldlines+stripes", "edlines", "fld", "lsd",
-                                      "gradients", "floor"}));
+            (std::vector<std::string>{"fieldlines", "fieldlines+light", "fieldlines+stripes", "fieldlines+features",
+                                      "edlines", "fld", "lsd", "gradients", "floor"}));
   // The light adaptation finds the same segments (the field's colour is the reference's here).
   EXPECT_EQ(rows["fieldlines+light"]["segments_per_image"], rows["fieldlines"]["segments_per_image"]);
   // Ours against ours is 1 in every order and round.
@@ -108,6 +108,9 @@ TEST_F(CliBench, JsonListsAllSevenRowsInBothOrders) {
     EXPECT_EQ(t.at("met").get<bool>(), t.at("ratio").get<double>() <= limit) << peer;
   }
   expect_ratio_summary(j.at("gradients_over_floor"));
+  // Junctions, circle and boundary add features, not segments: the stripes' segments.
+  EXPECT_EQ(rows["fieldlines+features"]["segments_per_image"], rows["fieldlines+stripes"]["segments_per_image"]);
+  expect_ratio_summary(j.at("features_over_plain"));
 
   // The table shows both orders, the worse ratio with its spread and the target checks on it.
   EXPECT_NE(r.out.find("2 images x 3 rounds x 2 passes in each order (block, interleaved; seed 9)"), std::string::npos)

@@ -32,9 +32,10 @@ constexpr const char* kHelp = R"(usage: fieldlines bench [options] PATH...
 Times, in this process, on the same colour images and on one thread (cv::setNumThreads(1);
 our rows may take more with --detector-threads):
   fieldlines  our LineDetector: ELSED + colour gradients + classification
-  fieldlines+light, fieldlines+stripes
-              the same with the per-frame light adaptation, or with the stripes stage (every
-              marking checked and measured across its width)
+  fieldlines+light, fieldlines+stripes, fieldlines+features
+              the same with the per-frame light adaptation, with the stripes stage (every
+              marking checked and measured across its width), or with every field feature
+              (stripes, L/T/X junctions, centre circle, field boundary)
   edlines     OpenCV ximgproc EdgeDrawing in EDLines mode (detectEdges + detectLines)
   fld         OpenCV ximgproc FastLineDetector
   lsd         OpenCV LineSegmentDetector
@@ -52,7 +53,7 @@ segments per image, and ours/this in each order: per round, our median call over
 median call in that round; the median over rounds. "worse" is the larger of the two orders
 (the less flattering to us), with its min-max over rounds. The targets ours <= 0.4 x edlines
 and ours <= 1.5 x floor (--floor-target) are checked against the worse ratio; gradients/floor
-is reported the same way.
+and features/fieldlines (what the field features cost, target <= 1.2) are reported the same way.
 PATH is an image or a folder; images that fail to load are reported and skipped (exit 1).
 
 options:
@@ -82,7 +83,8 @@ JSON: {"images":N, "scale":{"width","height"} (with --scale only), "detector_thr
   "detectors":[{"name", "median_ms", "p90_ms" (over every timed call, both orders),
     "segments_per_image", "block":{"median_ms","p90_ms"}, "interleaved":{"median_ms","p90_ms"},
     "ours_over_this":RATIO}],
-  "targets":{"edlines":TARGET, "floor":TARGET}, "gradients_over_floor":RATIO}
+  "targets":{"edlines":TARGET, "floor":TARGET}, "gradients_over_floor":RATIO,
+  "features_over_plain":RATIO}
   RATIO  = {"block", "interleaved", "worse", "worse_order" ("block" or "interleaved"), "min", "max"}
            (min and max: the worse order's ratio over rounds)
   TARGET = {"ratio" (the worse ours/this), "limit", "met", "order", "min", "max"}
@@ -207,8 +209,8 @@ int cmd_bench(const Args& args) {
   std::printf("ms: median call, %s time; ours/this: median over rounds of the round's ratio; worse: the larger, "
               "[min-max over rounds, order]\n\n",
               peers::clock_name(rounds.clock));
-  std::printf("%-18s %9s %11s %13s   %s\n", "", "", "", "", "------------ ours/this ------------");
-  std::printf("%-18s %9s %11s %13s   %6s %8s  %s\n", "detector", "block ms", "interl. ms", "segments/img", "block",
+  std::printf("%-20s %9s %11s %13s   %s\n", "", "", "", "", "------------ ours/this ------------");
+  std::printf("%-20s %9s %11s %13s   %6s %8s  %s\n", "detector", "block ms", "interl. ms", "segments/img", "block",
               "interl.", "worse [min-max, order]");
   nlohmann::ordered_json detectors_json = nlohmann::ordered_json::array();
   for (const auto& t : times) {
@@ -217,7 +219,7 @@ int cmd_bench(const Args& args) {
     const std::vector<double> block = t.pooled(peers::Order::Block), inter = t.pooled(peers::Order::Interleaved);
     std::vector<double> all = block;
     all.insert(all.end(), inter.begin(), inter.end());
-    std::printf("%-18s %9.3f %11.3f %13.1f   %6.2f %8.2f  %s\n", t.name.c_str(), peers::quantile(block, 0.5),
+    std::printf("%-20s %9.3f %11.3f %13.1f   %6.2f %8.2f  %s\n", t.name.c_str(), peers::quantile(block, 0.5),
                 peers::quantile(inter, 0.5), per_image, r.by_order[0], r.by_order[1], worse_text(r).c_str());
     nlohmann::ordered_json row_json{{"name", t.name}};
     row_json.update(calls_json(all));  // "median_ms", "p90_ms" over both orders
@@ -237,6 +239,10 @@ int cmd_bench(const Args& args) {
   std::printf("gradients/floor = %s (block %.2f, interleaved %.2f: our fused gradient pass against OpenCV's blur + "
               "Sobel)\n",
               worse_text(gradients).c_str(), gradients.by_order[0], gradients.by_order[1]);
+  const peers::RatioSummary features = peers::ratio_in_both_orders(row("fieldlines+features"), ours);
+  std::printf("features/fieldlines = %s (block %.2f, interleaved %.2f: every field feature on against none; "
+              "target <= 1.2)\n",
+              worse_text(features).c_str(), features.by_order[0], features.by_order[1]);
 
   if (json_out) {
     nlohmann::ordered_json j{{"images", images.size()}};
@@ -249,6 +255,7 @@ int cmd_bench(const Args& args) {
     j["detectors"] = detectors_json;
     j["targets"] = {{"edlines", target_json(vs_edlines)}, {"floor", target_json(vs_floor)}};
     j["gradients_over_floor"] = ratio_json(gradients);
+    j["features_over_plain"] = ratio_json(features);
     write_output_file(*json_out, j.dump(2) + "\n");
     std::printf("results written to %s\n", json_out->string().c_str());
   }

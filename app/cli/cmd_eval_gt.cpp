@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/detector.hpp"
@@ -51,7 +52,10 @@ options:
                      on, a second table scores them against the truth of the frames' field and
                      camera: intersections matched within 6 px (precision, recall, type correct
                      of matched) and the centre circle found on frames showing >= 30 % of it
-                     (centre within 10 % of its radius; wrong: ellipses matching no circle)
+                     (centre within 10 % of its radius; wrong: ellipses matching no circle),
+                     the field boundary (share of the columns showing carpet where it is within
+                     4 px of the carpet's top) and the markings (share of the pixels along the
+                     stripes' centre lines within half the line's width + 1 px of a line's centre)
   --max-distance PX  edge match distance (default 2.5)
   --min-width PX     painted parts narrower than this do not count in recall (default 1)
   --markdown         print the table as Markdown
@@ -100,15 +104,16 @@ void print_row(bool markdown, const std::string& scene, const std::string& condi
 void print_feature_row(bool markdown, const std::string& scene, const std::string& condition, const Group& g) {
   const synth::FeatureScore& f = g.features;
   const std::string p = fmt(f.precision(), f.detected > 0), r = fmt(f.recall(), f.truth > 0),
-                    t = fmt(f.type_accuracy(), f.matched > 0), c = fmt(f.circle_rate(), f.circles > 0);
+                    t = fmt(f.type_accuracy(), f.matched > 0), c = fmt(f.circle_rate(), f.circles > 0),
+                    b = fmt(f.boundary_share(), f.boundary_columns > 0), m = fmt(f.marking_share(), f.marking_px > 0);
   if (markdown) {
-    std::printf("| %s | %s | %ld | %ld | %s | %s | %s | %ld/%ld | %s | %ld/%ld |\n", scene.c_str(), condition.c_str(),
-                f.truth, f.detected, p.c_str(), r.c_str(), t.c_str(), f.circles_found, f.circles, c.c_str(),
-                f.ellipses_wrong, f.ellipses);
+    std::printf("| %s | %s | %ld | %ld | %s | %s | %s | %ld/%ld | %s | %ld/%ld | %s | %s |\n", scene.c_str(),
+                condition.c_str(), f.truth, f.detected, p.c_str(), r.c_str(), t.c_str(), f.circles_found, f.circles,
+                c.c_str(), f.ellipses_wrong, f.ellipses, b.c_str(), m.c_str());
   } else {
-    std::printf("%-12s %-11s %6ld %6ld %7s %7s %7s %5ld/%-5ld %7s %5ld/%ld\n", scene.c_str(), condition.c_str(), f.truth,
-                f.detected, p.c_str(), r.c_str(), t.c_str(), f.circles_found, f.circles, c.c_str(), f.ellipses_wrong,
-                f.ellipses);
+    std::printf("%-12s %-11s %6ld %6ld %7s %7s %7s %5ld/%-5ld %7s %5ld/%-8ld %8s %8s\n", scene.c_str(),
+                condition.c_str(), f.truth, f.detected, p.c_str(), r.c_str(), t.c_str(), f.circles_found, f.circles,
+                c.c_str(), f.ellipses_wrong, f.ellipses, b.c_str(), m.c_str());
   }
 }
 
@@ -128,7 +133,11 @@ nlohmann::json to_json(const Group& g) {
                              {"type_accuracy", g.features.type_accuracy()}}},
           {"circle", {{"frames", g.features.circles}, {"found", g.features.circles_found},
                       {"rate", g.features.circle_rate()}, {"ellipses", g.features.ellipses},
-                      {"ellipses_wrong", g.features.ellipses_wrong}}}};
+                      {"ellipses_wrong", g.features.ellipses_wrong}}},
+          {"field_boundary", {{"columns", g.features.boundary_columns}, {"within_4px", g.features.boundary_right},
+                              {"share", g.features.boundary_share()}}},
+          {"markings", {{"px", g.features.marking_px}, {"on_line_px", g.features.marking_on_line_px},
+                        {"share", g.features.marking_share()}}}};
 }
 
 }  // namespace
@@ -149,7 +158,7 @@ namespace {
 
 // One image to score: where it is, its truth, and the row it counts in.
 struct EvalImage {
-  fs::path image;
+  fs::path image, mask;  // mask: synthetic sets only
   synth::GroundTruth truth;
   std::string row, condition;
 };
@@ -163,7 +172,8 @@ std::vector<EvalItem> synth_items(const std::vector<fs::path>& dirs) {
       items.push_back([image = image, file = truth_file] {
         synth::GroundTruth truth = synth::load_truth(file);
         std::string row(synth::to_string(truth.scene)), condition(synth::to_string(truth.condition));
-        return EvalImage{image, std::move(truth), std::move(row), std::move(condition)};
+        fs::path mask = file.parent_path() / truth.mask;
+        return EvalImage{image, std::move(mask), std::move(truth), std::move(row), std::move(condition)};
       });
   return items;
 }
@@ -176,7 +186,7 @@ std::vector<EvalItem> hand_items(const std::vector<fs::path>& dirs, const fs::pa
     for (const fs::path& file : synth::list_hand_truth(dir))
       items.push_back([file, data, row = normal.filename().string()] {
         synth::HandTruth hand = synth::load_hand_truth(file);
-        return EvalImage{data / hand.image, std::move(hand.truth), row, "hand"};
+        return EvalImage{data / hand.image, {}, std::move(hand.truth), row, "hand"};
       });
   }
   return items;
@@ -211,6 +221,7 @@ int cmd_eval_gt(const Args& args) {
 
   const std::vector<EvalItem> items = hand ? hand_items(dirs, *data) : synth_items(dirs);
   LineDetector detector(file.detector, file.thresholds);
+  detector.set_find_field_boundary(features);
   std::map<std::pair<std::string, std::string>, Group> groups;
   Group total;
   int failed = 0;
@@ -224,8 +235,10 @@ int cmd_eval_gt(const Args& args) {
       const GtScore score = GtEdges(item.truth, match).score(segments);
       synth::FeatureScore feature_score;
       if (features) {
-        const auto ft = synth::feature_truth(item.truth);
-        feature_score = synth::score_features(ft, detector.features());
+        // Without its mask (not written, unreadable) every column showing carpet counts.
+        const cv::Mat mask = cv::imread(item.mask.string(), cv::IMREAD_UNCHANGED);
+        const auto ft = synth::feature_truth(item.truth, mask);
+        feature_score = synth::score_features(item.truth, ft, detector.features());
       }
       Group& g = groups[{item.row, item.condition}];
       g.score += score, g.features += feature_score, g.detect_ms += ms;
@@ -256,10 +269,11 @@ int cmd_eval_gt(const Args& args) {
     std::printf("\n");
     if (markdown) {
       std::printf("| scene | condition | true junctions | detected | precision | recall | type correct | "
-                  "circles found | circle rate | wrong ellipses |\n|---|---|---|---|---|---|---|---|---|---|\n");
+                  "circles found | circle rate | wrong ellipses | boundary within 4 px | markings on line |\n"
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     } else {
-      std::printf("%-12s %-11s %6s %6s %7s %7s %7s %11s %7s %s\n", "scene", "condition", "true J", "det J", "J prec",
-                  "J rec", "J type", "circles", "rate", "wrong/ellipses");
+      std::printf("%-12s %-11s %6s %6s %7s %7s %7s %11s %7s %-14s %8s %8s\n", "scene", "condition", "true J", "det J",
+                  "J prec", "J rec", "J type", "circles", "rate", "wrong/ellipses", "bound 4px", "mark on");
     }
     for (const auto& [key, g] : groups) print_feature_row(markdown, key.first, key.second, g);
     print_feature_row(markdown, "all", "all", total);

@@ -48,6 +48,17 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
                    return segments->size();
                  }});
 
+  // Every field feature on (field_features.hpp): stripes, junctions, centre circle, boundary.
+  DetectorParams featured = striped;
+  featured.intersections = featured.centre_circle = true;
+  auto ours_features = std::make_shared<LineDetector>(featured, thresholds);
+  ours_features->set_find_field_boundary(true);
+  out.push_back({"fieldlines+features", "the same with every field feature (stripes, junctions, circle, boundary)",
+                 [ours_features, segments](const cv::Mat& bgr) {
+                   ours_features->detect(bgr, *segments);
+                   return segments->size();
+                 }});
+
   auto ed = cv::ximgproc::createEdgeDrawing();
   auto ed_state = std::make_shared<GreyLines>();
   out.push_back({"edlines", "OpenCV ximgproc EdgeDrawing, EDLines (detectEdges + detectLines)",

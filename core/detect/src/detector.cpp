@@ -1,5 +1,7 @@
 #include "fieldlines/detect/detector.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <span>
 #include <string>
@@ -7,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "elsed/elsed.hpp"
+#include "features/field_pixel.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/detect/centre_circle.hpp"
 #include "fieldlines/detect/intersections.hpp"
@@ -23,6 +26,7 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   StripeWorkspace stripes;
   IntersectionWorkspace intersections;
   std::vector<Segment> pieces;  // the second drawing (find_pieces)
+  std::vector<int> piece_rows;  // per column, the first row it draws from
   StripeWorkspace piece_stripes;
   std::vector<Marking> arcs;    // the pieces that are stripes
   std::vector<Marking> lines;   // those of them not on the circle
@@ -87,9 +91,10 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   impl_->features.clear();
   const cv::Mat* bgr = normalise(image);
   if (!bgr) return;
-  const bool boundary = find_boundary_ || thresholds_.field_boundary_gate;
-  // Junctions and the circle are made of stripes.
-  const bool stripes = params_.stripes || params_.intersections || params_.centre_circle;
+  const bool pieces = params_.intersections || params_.centre_circle;
+  // The pieces of junctions and the circle are drawn below the boundary; they are stripes.
+  const bool boundary = find_boundary_ || thresholds_.field_boundary_gate || pieces;
+  const bool stripes = params_.stripes || pieces;
   if (thresholds_.light.enabled || boundary || stripes || params_.dark_field > 0)
     impl_->field = estimate_field_colour(*bgr);
   impl_->frame.gradient_threshold =
@@ -102,7 +107,7 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary);
   label(out, gain, thresholds_, f.field_boundary);
   if (stripes) find_stripes(*bgr, impl_->field, out, params_, impl_->stripes, f.markings);
-  if (params_.intersections || params_.centre_circle) find_pieces(*bgr, gain);
+  if (pieces) find_pieces(*bgr, gain);
 }
 
 // The junctions and the circle need pieces shorter than the detector's minimum length (a line
@@ -112,7 +117,22 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain) {
   constexpr int kPieceScanInterval = 4;  // a short piece needs an anchor on it
   FieldFeatures& f = impl_->features;
   std::vector<Segment>& pieces = impl_->pieces;
-  impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, pieces);
+  // Painted lines lie below the field boundary: anchors above it (walls, the room) only draw
+  // pieces that are no stripes. A margin keeps lines along the far edge, which the boundary's
+  // blur can cut.
+  std::vector<int>& rows = impl_->piece_rows;
+  rows.clear();
+  if (!f.field_boundary.empty()) {
+    const float margin = std::max(6.f, 0.03f * float(bgr.rows));  // place_of()'s band along it
+    rows.resize(static_cast<std::size_t>(bgr.cols));
+    for (int x = 0; x < bgr.cols; ++x)
+      rows[static_cast<std::size_t>(x)] = static_cast<int>(f.field_boundary.y_at(float(x)) - margin);
+  }
+  // An anchor with no pixel beside it as bright as a stripe's paint and as grey as the field
+  // boundary's paint (turf texture, shade, bright blades of real grass) draws no stripe.
+  const int bright = impl_->field ? static_cast<int>(std::ceil(kPaintContrast * FieldPixel(*impl_->field, {}).field_sum())) : 0;
+  const float grey = FieldBoundaryParams{}.paint_chroma;
+  impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, {rows, bright, grey}, pieces);
   // The colour test without its length: shortness is what these pieces are for. (Leaving the
   // colour test to the stripes check alone finds a few more junctions at a fifth more false ones
   // on synthetic fields.)

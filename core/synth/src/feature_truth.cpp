@@ -92,8 +92,9 @@ float heading(const Vector2d& v) {
 
 }  // namespace
 
-FeatureTruth feature_truth(const GroundTruth& truth) {
+FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask) {
   FeatureTruth out;
+  out.carpet_top = carpet_top_rows(truth, mask);
   const FieldModel field = make_field({.scene = truth.scene, .line_width = truth.line_width});
   const Camera camera(truth.intrinsics, truth.pose);
   const Intrinsics& k = truth.intrinsics;
@@ -174,11 +175,36 @@ FeatureTruth feature_truth(const GroundTruth& truth) {
 FeatureScore& FeatureScore::operator+=(const FeatureScore& o) {
   detected += o.detected, truth += o.truth, matched += o.matched, type_correct += o.type_correct;
   circles += o.circles, circles_found += o.circles_found, ellipses += o.ellipses, ellipses_wrong += o.ellipses_wrong;
+  boundary_columns += o.boundary_columns, boundary_right += o.boundary_right;
+  marking_px += o.marking_px, marking_on_line_px += o.marking_on_line_px;
   return *this;
+}
+
+FeatureScore score_features(const GroundTruth& frame, const FeatureTruth& truth, const FieldFeatures& detected,
+                            const FeatureScoreParams& params) {
+  FeatureScore s = score_features(truth, detected, params);
+  // One point per pixel of length along each marking, both ends included.
+  for (const Marking& m : detected.markings) {
+    const int n = std::max(1, static_cast<int>(std::ceil(std::hypot(m.x1 - m.x0, m.y1 - m.y0))));
+    for (int k = 0; k <= n; ++k) {
+      const float a = float(k) / float(n), x = m.x0 + a * (m.x1 - m.x0), y = m.y0 + a * (m.y1 - m.y0);
+      float width = 0;
+      ++s.marking_px;
+      s.marking_on_line_px += nearest_paint(frame, x, y, "", width) <= 0.5 * width + params.marking_margin_px;
+    }
+  }
+  return s;
 }
 
 FeatureScore score_features(const FeatureTruth& truth, const FieldFeatures& detected, const FeatureScoreParams& params) {
   FeatureScore s;
+  const FieldBoundary& boundary = detected.field_boundary;
+  for (std::size_t u = 0; u < truth.carpet_top.size(); ++u) {
+    if (truth.carpet_top[u] < 0) continue;
+    ++s.boundary_columns;
+    s.boundary_right += !boundary.empty() &&
+                        std::abs(boundary.y_at(float(u)) - truth.carpet_top[u]) <= params.max_boundary_px;
+  }
   s.detected = static_cast<long>(detected.intersections.size());
   s.truth = static_cast<long>(truth.intersections.size());
   // Every (detected, true) pair within reach, nearest first; each side used once.

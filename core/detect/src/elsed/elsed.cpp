@@ -38,18 +38,39 @@ void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& pa
   workers_.run(bands, band);
 }
 
-void ElsedEngine::find_anchors(int scan_interval, int threshold) {
+void ElsedEngine::find_anchors(int scan_interval, int threshold, const cv::Mat& bgr, const AnchorLimits& limits) {
+  constexpr int kBrightReach = 5;
   const int w = maps_.width, h = maps_.height;
   const std::int16_t* g = maps_.mag.data();
+  const bool limited = static_cast<int>(limits.first_rows.size()) == w;
+  // Whether a pixel within kBrightReach across the edge at (x, y) reaches min_bright_sum.
+  const auto bright_beside = [&](int x, int y, bool across_rows) {
+    for (int d = -kBrightReach; d <= kBrightReach; ++d) {
+      const int px = across_rows ? x : x + d, py = across_rows ? y + d : y;
+      if (px < 0 || py < 0 || px >= w || py >= h) continue;
+      const std::uint8_t* p = bgr.ptr<std::uint8_t>(py) + 3 * px;
+      const int sum = p[0] + p[1] + p[2];
+      if (sum < limits.min_bright_sum) continue;
+      // Near grey: |R - sum/3| + |G - sum/3| within max_chroma of the sum (times 3: integers).
+      if (std::abs(3 * p[2] - sum) + std::abs(3 * p[1] - sum) <= limits.max_chroma * 3 * sum) return true;
+    }
+    return false;
+  };
   anchors_.clear();
   // Column by column, as the method scans: the order decides which anchor draws an edge first.
   for (int x = 1; x < w - 1; x += scan_interval) {
-    for (int y = 1; y < h - 1; y += scan_interval) {
+    // The first grid row (1 + k * scan_interval) at or below the column's first row.
+    const int first = limited ? limits.first_rows[static_cast<std::size_t>(x)] : 1;
+    const int y0 = first <= 1 ? 1 : 1 + (first - 1 + scan_interval - 1) / scan_interval * scan_interval;
+    for (int y = y0; y < h - 1; y += scan_interval) {
       const int i = y * w + x;
       if (g[i] == 0) continue;
       // A local maximum across the edge by at least `threshold`.
-      const int step = dir_of(maps_.state[i]) == EdgeDir::Horizontal ? w : 1;
-      if (g[i] >= g[i - step] + threshold && g[i] >= g[i + step] + threshold) anchors_.push_back({x, y});
+      const bool across_rows = dir_of(maps_.state[i]) == EdgeDir::Horizontal;
+      const int step = across_rows ? w : 1;
+      if (g[i] >= g[i - step] + threshold && g[i] >= g[i + step] + threshold &&
+          (limits.min_bright_sum <= 0 || bright_beside(x, y, across_rows)))
+        anchors_.push_back({x, y});
     }
   }
 }
@@ -60,7 +81,7 @@ void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, std::vec
   // With no anchor at all, retry with a halved threshold (down to zero) like the method.
   int anchor_threshold = params.anchor_threshold;
   for (;;) {
-    find_anchors(params.scan_interval, anchor_threshold);
+    find_anchors(params.scan_interval, anchor_threshold, bgr, {});
     if (!anchors_.empty() || anchor_threshold == 0) break;
     anchor_threshold /= 2;
   }
@@ -91,13 +112,13 @@ void ElsedEngine::draw_and_validate(const cv::Mat& bgr, const DetectorParams& pa
 }
 
 void ElsedEngine::redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,
-                         std::vector<Segment>& out) {
+                         const AnchorLimits& limits, std::vector<Segment>& out) {
   out.clear();
   if (maps_.width != bgr.cols || maps_.height != bgr.rows) return;  // run() has not seen this frame
   // The first drawing's marks would stop the new one at every pixel it owns: back to Free,
   // keeping each pixel's edge direction.
   for (elsed::PixelState& st : maps_.state) st = elsed::with_mark(st, Mark::Free);
-  find_anchors(scan_interval, params.anchor_threshold);
+  find_anchors(scan_interval, params.anchor_threshold, bgr, limits);
   draw_and_validate(bgr, params, min_line_length, out);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Private: the ELSED pipeline (smoothing, gradients, anchors, drawing, validation) with the
 // method's colour-gradient extraction. Owns every buffer so repeated calls do not allocate.
+#include <span>
 #include <vector>
 
 #include <opencv2/core/mat.hpp>
@@ -24,13 +25,20 @@ class ElsedEngine {
   const elsed::GradientMaps& gradients() const { return maps_; }
   // After run() on the same frame: draws it again from anchors every `scan_interval` px, keeping
   // segments from `min_line_length` px (the short pieces of curves), into `out` (cleared first).
+  // `limits` keeps anchors from where no piece is wanted (edges drawn from the others may still
+  // run there).
+  struct AnchorLimits {
+    std::span<const int> first_rows;  // one per column: anchors from that row down; empty: all
+    int min_bright_sum = 0;           // a pixel this bright (B + G + R) within 5 px across...
+    float max_chroma = 2;             // ...and this grey (|r - 1/3| + |g - 1/3|, r = R / sum); 2: any
+  };
   void redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,
-              std::vector<Segment>& out);
+              const AnchorLimits& limits, std::vector<Segment>& out);
 
  private:
   void draw_and_validate(const cv::Mat& bgr, const DetectorParams& params, int min_line_length,
                          std::vector<Segment>& out);
-  void find_anchors(int scan_interval, int threshold);
+  void find_anchors(int scan_interval, int threshold, const cv::Mat& bgr, const AnchorLimits& limits);
 
   // One pass per thread (each its own scratch rows), all configured alike; passes_[0] runs on
   // the calling thread.

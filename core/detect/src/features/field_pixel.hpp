@@ -12,6 +12,10 @@
 
 namespace fieldlines {
 
+// A stripe's paint peaks at least this many times the field colour's R + G + B (stripes.cpp); the
+// second drawing's anchors need a pixel that bright beside them (detector.cpp).
+constexpr float kPaintContrast = 1.1f;
+
 class FieldPixel {
  public:
   FieldPixel(const Rgb& field, const FieldBoundaryParams& params)

@@ -14,7 +14,6 @@ using Candidate = StripeWorkspace::Candidate;
 constexpr int kOuterPx = 2;      // the profile starts this far outside the edge, beyond its blur
 constexpr int kMaxBlurPx = 10;   // paint fades into turf over at most this many px (motion blur)...
 constexpr float kBlurShade = 0.85f;  // ...none darker than this share of the field colour
-constexpr float kPaintContrast = 1.1f;   // the paint's peak R + G + B over the field colour's
 constexpr float kMinWidthPx = 0.5f;
 constexpr float kTopWidthShare = 0.25f;  // the widest stripe on the top row, as a share of the bottom's
 constexpr float kTwinCos = 0.9962f;      // cos(5 degrees): twins are this parallel...

@@ -47,8 +47,9 @@ class LineDetector {
   const Thresholds& thresholds() const { return thresholds_; }
   void set_thresholds(const Thresholds& t) { thresholds_ = t; }
 
-  // The field boundary of the last detect() (field_boundary.hpp): found when asked for here or
-  // when the thresholds keep markings below it; empty otherwise, or when the frame has no field.
+  // The field boundary of the last detect() (field_boundary.hpp): found when asked for here,
+  // when the thresholds keep markings below it, or when junctions or the centre circle are on
+  // (their pieces are drawn below it); empty otherwise, or when the frame has no field.
   void set_find_field_boundary(bool on) { find_boundary_ = on; }
   const FieldBoundary& field_boundary() const;
   // The field colour of the last detect() (light.hpp), measured once when the light adaptation,

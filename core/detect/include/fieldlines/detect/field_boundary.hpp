@@ -7,10 +7,10 @@
 // Each sampled column is scanned from the bottom up (the field is below the camera's horizon)
 // for the top of its field: field pixels interrupted by less than a gap (a ball, a robot's
 // foot) belong to it, and so does paint (a line near the camera can be wider than any gap);
-// the first longer stretch without field ends it. Column
-// tops are median-filtered across neighbouring columns (a lone column running up a green
-// poster or pole is an outlier), then replaced by their upper convex hull: a robot or player standing on
-// the field hides the green behind it and pulls its columns down, but the boundary of a flat
+// the first longer stretch without field ends it. Column tops are median-filtered across 7
+// neighbouring columns (a column running up a green poster, pole or shirt is an outlier, and so
+// are up to 3 side by side), then replaced by their upper convex hull: a robot or player standing
+// on the field hides the green behind it and pulls its columns down, but the boundary of a flat
 // field seen from inside it is convex in the image, so the hull bridges such notches
 // (B-Human's field boundary does the same). A frame without green gives an empty boundary.
 // Buffers are the caller's and keep their capacity: no allocation once warm.
@@ -31,7 +31,7 @@ struct FieldBoundaryParams {
   double min_columns = 0.25;   // columns with field needed, as a share: fewer is no boundary
   float chroma_tolerance = 0.07f;       // |r/s - r_f/s_f| + |g/s - g_f/s_f|, s = r + g + b
   float min_brightness = 0.25f, max_brightness = 2.5f;  // s / s_f: shade to sun patch
-  int median_columns = 5;      // window of the filter over column tops (odd)
+  int median_columns = 7;      // window of the filter over column tops (odd)
   float paint_brightness = 1.4f;     // paint: s / s_f at least this...
   float paint_chroma = 0.1f;         // ...and |r/s - 1/3| + |g/s - 1/3| at most this
   double max_paint_fraction = 0.15;  // a run of paint longer than this share of the height is a wall

@@ -40,7 +40,7 @@ struct FieldFeatures {
   std::vector<Marking> markings;            // stripes (stripes.hpp); empty when the stage is off
   std::vector<Intersection> intersections;  // intersections.hpp; empty when the stage is off
   std::vector<MarkingEllipse> ellipses;     // the centre circle (centre_circle.hpp); likewise
-  FieldBoundary field_boundary;             // field_boundary.hpp; empty when not asked for
+  FieldBoundary field_boundary;             // field_boundary.hpp; as LineDetector::field_boundary()
   void clear() {
     markings.clear();
     intersections.clear();
