@@ -4,7 +4,7 @@
 // with no correction, auto-train on as in the studio. Scored against the frames' exact ground
 // truth (what `fieldlines autolabel` gives): the share of segments labelled, the share agreeing
 // with the truth, and the precision of the accepted marking labels. Measured figures and the
-// floors' margins: docs/studio.md ("Unseen seeds").
+// floors' margins: docs/studio.md ("Walk-through figures").
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // have no hand truth, so the studio never sees the frames it is scored on), opened in the real
 // window, P, one Enter per frame with no correction, the thresholds exported from the Export
 // tab, and the exported file scored with `fieldlines eval --hand` on the venue's hand-truth
-// frames. The floors and the measured figures are in docs/studio.md ("Real frames").
+// frames. The floors and the measured figures are in docs/studio.md ("Walk-through figures").
 
 #include <gtest/gtest.h>
 
