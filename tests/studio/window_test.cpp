@@ -32,6 +32,7 @@ using namespace std::chrono_literals;
 
 namespace {
 
+using studio_test::rows_of_colour;
 using studio_test::run;
 using studio_test::wait_for;
 
@@ -192,23 +193,6 @@ TEST_F(StudioWindow, LabelByMouseAndKeysUndoRedoAndSurviveSigkill) {
   EXPECT_EQ(reopened.images[0].segments[6].label, Label::Marking);
 }
 
-// Rows of the side panel whose left edge has colour `c` (the path field's frame, a button), as
-// the centres of their runs, top to bottom: the Export tab's widgets, found the way a user sees them.
-std::vector<int> rows_of_colour(const cv::Mat& shot, std::array<int, 3> c) {
-  std::vector<int> centres;
-  int run_start = -1;
-  for (int y = 30; y <= shot.rows - 30; ++y) {
-    const cv::Vec3b p = shot.at<cv::Vec3b>(y, 878);  // BGR, just inside the side panel
-    const bool hit = std::abs(p[2] - c[0]) <= 8 && std::abs(p[1] - c[1]) <= 8 && std::abs(p[0] - c[2]) <= 8;
-    if (hit && run_start < 0) run_start = y;
-    if (!hit && run_start >= 0) {
-      if (y - run_start >= 10) centres.push_back((run_start + y) / 2);
-      run_start = -1;
-    }
-  }
-  return centres;
-}
-
 // Export path as a user types it: click the field, Ctrl+A (from idle, where ImGui 1.86 lost the
 // tap), "~/x/robot.json"; the folder is not there, so Enter writes nothing and the first button
 // offers to create it; the file lands in $HOME/x, nothing named "~" anywhere.
@@ -228,7 +212,7 @@ TEST_F(StudioWindow, ExportPathExpandsTildeAndCreatesTheFolderWhenAsked) {
   ASSERT_TRUE(wait_for([&] { return state()["panel"] == "Export"; }, 10s));
   std::this_thread::sleep_for(400ms);
   const std::array<int, 3> field_bg{29, 47, 73}, button_bg{36, 70, 110};  // ImGui's dark style
-  const std::vector<int> fields = rows_of_colour(cv::imread(screenshot("export-before").string()), field_bg);
+  const std::vector<int> fields = rows_of_colour(screenshot("export-before"), field_bg);
   ASSERT_FALSE(fields.empty()) << "no path field on the Export tab";
   ASSERT_EQ(run(x("mousemove 1000 " + std::to_string(fields.front()) + " click 1")), 0);
   ASSERT_EQ(run(x("mousemove " + std::to_string(kWidth - 60) + " 780")), 0);
@@ -244,7 +228,7 @@ TEST_F(StudioWindow, ExportPathExpandsTildeAndCreatesTheFolderWhenAsked) {
   std::this_thread::sleep_for(600ms);
   EXPECT_FALSE(fs::exists(home / "x")) << "Enter created a folder without being asked";
 
-  const std::vector<int> buttons = rows_of_colour(cv::imread(screenshot("export-missing-folder").string()), button_bg);
+  const std::vector<int> buttons = rows_of_colour(screenshot("export-missing-folder"), button_bg);
   ASSERT_FALSE(buttons.empty()) << "no buttons on the Export tab";
   ASSERT_EQ(run(x("mousemove 900 " + std::to_string(buttons.front()) + " click 1")), 0);  // "Create folder and export"
   const fs::path written = home / "x" / "robot.json";

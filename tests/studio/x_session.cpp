@@ -10,6 +10,8 @@
 #include <fstream>
 #include <thread>
 
+#include <opencv2/imgcodecs.hpp>
+
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/data/project.hpp"
 #include "gui/model/hit_test.hpp"
@@ -97,6 +99,22 @@ long rss_kib(pid_t pid) {
     status.ignore(4096, '\n');
   }
   return -1;
+}
+
+std::vector<int> rows_of_colour(const fs::path& screenshot, std::array<int, 3> rgb) {
+  const cv::Mat shot = cv::imread(screenshot.string());
+  std::vector<int> centres;
+  int run_start = -1;
+  for (int y = 30; y <= shot.rows - 30; ++y) {
+    const cv::Vec3b p = shot.at<cv::Vec3b>(y, 878);  // BGR, just inside the side panel
+    const bool hit = std::abs(p[2] - rgb[0]) <= 8 && std::abs(p[1] - rgb[1]) <= 8 && std::abs(p[0] - rgb[2]) <= 8;
+    if (hit && run_start < 0) run_start = y;
+    if (!hit && run_start >= 0) {
+      if (y - run_start >= 10) centres.push_back((run_start + y) / 2);
+      run_start = -1;
+    }
+  }
+  return centres;
 }
 
 Display start_xvfb(const fs::path& log, int width, int height) {

@@ -5,6 +5,7 @@
 
 #include <sys/types.h>
 
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <functional>
@@ -51,6 +52,11 @@ nlohmann::json read_state(const std::filesystem::path& file);
 
 // Resident set size of a process in KiB (/proc/PID/status VmRSS), or -1 when it is gone.
 long rss_kib(pid_t pid);
+
+// Rows of a screenshot's side panel whose left edge (x = 878) has colour `rgb` (a text field's
+// frame, a button), as the centres of runs of 10 rows or more, top to bottom: the widgets
+// found the way a user sees them.
+std::vector<int> rows_of_colour(const std::filesystem::path& screenshot, std::array<int, 3> rgb);
 
 struct Display {
   std::string name;
