@@ -146,6 +146,18 @@ class StudioRealFrames : public studio_test::StudioUnderX {
     return true;
   }
 
+  // The walk-through, then its scores against floors 0.05 under the measured figures: the run
+  // is deterministic here, the margin is for another compiler's or OpenCV's rounding moving a
+  // few segments across a threshold (one of 60 segments is 0.017 of precision).
+  void expect_walk(const fs::path& samples, const Venue& venue, double min_precision, double min_recall) {
+    Scores s;
+    ASSERT_TRUE(walk(samples, venue, s));
+    EXPECT_GE(s.marking_precision, min_precision);
+    EXPECT_GE(s.marking_recall, min_recall);
+    // What the walk-through is for: more of the paint found than with the defaults.
+    EXPECT_GT(s.marking_recall, s.default_recall + 0.1);
+  }
+
   static fs::path source_dir_hand(const Venue& v) {
     return fieldlines::test::source_dir() / "tests" / "data" / "hand_truth" / v.hand_truth;
   }
@@ -153,33 +165,23 @@ class StudioRealFrames : public studio_test::StudioUnderX {
 
 TEST_F(StudioRealFrames, MslDeLochtFourFramesProposeAcceptExportScoreOnHandTruth) {
   FIELDLINES_REQUIRE_SHARED("data/msl-samples", samples);
-  const Venue venue{"msl-delocht",
-                    {"20190606_r4_cam0_20190606_211800.jpg", "20190606_r4_cam0_20190606_211942.jpg",
-                     "20190606_r4_cam0_20190606_212118.jpg", "20190606_r4_cam0_20190606_212312.jpg"}};
-  Scores s;
-  ASSERT_TRUE(walk(samples, venue, s));
   // Measured: precision 0.933, recall 0.444 (60 marking segments predicted); the built-in
-  // thresholds 1.000 / 0.232. The floors are 0.05 under the measured figures: the run is
-  // deterministic here, the margin is for another compiler's or OpenCV's rounding moving a
-  // few segments across a threshold (one of 60 segments is 0.017 of precision).
-  EXPECT_GE(s.marking_precision, 0.88);
-  EXPECT_GE(s.marking_recall, 0.39);
-  // What the walk-through is for: more of the paint found than with the defaults.
-  EXPECT_GT(s.marking_recall, s.default_recall + 0.1);
+  // thresholds 1.000 / 0.232.
+  expect_walk(samples,
+              {"msl-delocht",
+               {"20190606_r4_cam0_20190606_211800.jpg", "20190606_r4_cam0_20190606_211942.jpg",
+                "20190606_r4_cam0_20190606_212118.jpg", "20190606_r4_cam0_20190606_212312.jpg"}},
+              0.88, 0.39);
 }
 
 TEST_F(StudioRealFrames, MslBordeauxFourFramesProposeAcceptExportScoreOnHandTruth) {
   FIELDLINES_REQUIRE_SHARED("data/msl-samples", samples);
-  const Venue venue{"msl-bordeaux",
-                    {"20230709_r5_cam0_20230709_105326.jpg", "20230709_r5_cam0_20230709_105617.jpg",
-                     "20230709_r5_cam0_20230709_151732.jpg", "20230709_r5_cam0_20230709_152521.jpg"}};
-  Scores s;
-  ASSERT_TRUE(walk(samples, venue, s));
-  // Measured: precision 0.975, recall 0.603 (80 predicted); the built-in thresholds 1.000 /
-  // 0.051. Floors 0.05 under, as above.
-  EXPECT_GE(s.marking_precision, 0.92);
-  EXPECT_GE(s.marking_recall, 0.55);
-  EXPECT_GT(s.marking_recall, s.default_recall + 0.1);
+  // Measured: precision 0.975, recall 0.603 (80 predicted); the built-in thresholds 1.000 / 0.051.
+  expect_walk(samples,
+              {"msl-bordeaux",
+               {"20230709_r5_cam0_20230709_105326.jpg", "20230709_r5_cam0_20230709_105617.jpg",
+                "20230709_r5_cam0_20230709_151732.jpg", "20230709_r5_cam0_20230709_152521.jpg"}},
+              0.92, 0.55);
 }
 
 }  // namespace
