@@ -1,6 +1,7 @@
 // The robot's thresholds file: round trip, version and range checks, clear errors.
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -13,7 +14,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("fl_thr_" + name); }
+// Named for the running test: ctest runs the tests of this file in parallel processes, and two
+// of them writing and removing one "bad.json" read each other's file or none.
+fs::path temp(const std::string& name) {
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  return fs::temp_directory_path() / ("fl_thr_" + test + "_" + name);
+}
 
 std::string load_error(const std::string& text) {
   const fs::path p = temp("bad.json");
