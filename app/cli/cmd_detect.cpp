@@ -96,7 +96,7 @@ struct Options {
 
 void apply_feature_options(const Options& opt, DetectorParams& params) {
   if (opt.stripes) params.stripes = *opt.stripes;
-  if (opt.features) params.stripes = params.intersections = params.centre_circle = true;
+  if (opt.features) params = with_every_feature(params);
 }
 
 // Output files are checked here, before a possibly long batch, not after it.

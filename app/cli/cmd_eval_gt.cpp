@@ -212,7 +212,7 @@ int cmd_eval_gt(const Args& args) {
   const auto json_path = output_path(a, "--json");  // checked before the detection runs
   ThresholdsFile file;
   if (const auto t = a.value("--thresholds")) file = load_thresholds_file(*t);
-  if (a.flag("--features")) file.detector.stripes = file.detector.intersections = file.detector.centre_circle = true;
+  if (a.flag("--features")) file.detector = with_every_feature(file.detector);
   const bool features = !hand && (file.detector.intersections || file.detector.centre_circle);
   GtMatchParams match;
   match.max_distance_px = static_cast<float>(a.double_or("--max-distance", match.max_distance_px, 0.1, 50));

@@ -49,9 +49,7 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
                  }});
 
   // Every field feature on (field_features.hpp): stripes, junctions, centre circle, boundary.
-  DetectorParams featured = striped;
-  featured.intersections = featured.centre_circle = true;
-  auto ours_features = std::make_shared<LineDetector>(featured, thresholds);
+  auto ours_features = std::make_shared<LineDetector>(with_every_feature(params), thresholds);
   ours_features->set_find_field_boundary(true);
   out.push_back({"fieldlines+features", "the same with every field feature (stripes, junctions, circle, boundary)",
                  [ours_features, segments](const cv::Mat& bgr) {

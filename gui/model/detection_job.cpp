@@ -7,16 +7,11 @@
 
 namespace fieldlines::studio {
 
-DetectorParams with_feature_stages(DetectorParams params) {
-  params.stripes = params.intersections = params.centre_circle = true;
-  return params;
-}
-
 void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, const Thresholds& thresholds) {
   total_ = items.size();
   done_ = 0;
   job_.start([items = std::move(items), params, thresholds](std::stop_token stop, const auto& report) {
-    LineDetector detector(with_feature_stages(params), thresholds);  // throws on bad parameters: the job's error
+    LineDetector detector(with_every_feature(params), thresholds);  // throws on bad parameters: the job's error
     detector.set_find_field_boundary(true);
     std::size_t processed = 0;
     for (const Item& item : items) {

@@ -3,7 +3,7 @@
 // reused: each image's result is a progress message as it finishes; the job fails as a whole
 // only when it cannot start (bad detector parameters).
 //
-// Every feature stage runs (with_feature_stages), so each result also holds the frame's field
+// Every feature stage runs (with_every_feature), so each result also holds the frame's field
 // features for the image view. The stages relabel the detector's segments (the stripes check
 // makes non-stripe markings none) but never move, add or drop one, and the studio takes only
 // their geometry and colour gradients: ProjectDetection clears their labels, and predictions
@@ -28,10 +28,6 @@ struct DetectionResult {
   std::string error;              // non-empty when this image could not be loaded or detected
 };
 
-// `params` with every field feature stage on (stripes, intersections, centre circle), as
-// `fieldlines detect --features` runs them; the rest unchanged.
-DetectorParams with_feature_stages(DetectorParams params);
-
 class DetectionJob {
  public:
   struct Item {
@@ -39,7 +35,7 @@ class DetectionJob {
     std::filesystem::path path;
   };
   // Starts on a worker thread; a running job is cancelled and joined first. The detector runs
-  // with_feature_stages(params) and finds the field boundary too.
+  // with_every_feature(params) and finds the field boundary too.
   void start(std::vector<Item> items, const DetectorParams& params, const Thresholds& thresholds);
   void cancel() { job_.cancel(); }
   bool running() const { return job_.running(); }

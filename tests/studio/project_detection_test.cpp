@@ -87,10 +87,10 @@ TEST(ProjectDetection, KeepsEachImagesFieldFeaturesAndTheSameSegmentsAsWithoutTh
   across.x0 = 20, across.y0 = 100, across.x1 = 300, across.y1 = 120;
   down.x0 = 150, down.y0 = 40, down.x1 = 170, down.y1 = 230;
   cv::imwrite((f.dir.path() / "good.png").string(), studio_test::field_image(320, 240, {across, down}));
-  EXPECT_EQ(fs::with_feature_stages({}).stripes, true);
-  EXPECT_EQ(fs::with_feature_stages({}).intersections, true);
-  EXPECT_EQ(fs::with_feature_stages({}).centre_circle, true);
-  EXPECT_EQ(fs::with_feature_stages({}).gradient_threshold, fieldlines::DetectorParams{}.gradient_threshold);
+  EXPECT_EQ(fieldlines::with_every_feature({}).stripes, true);
+  EXPECT_EQ(fieldlines::with_every_feature({}).intersections, true);
+  EXPECT_EQ(fieldlines::with_every_feature({}).centre_circle, true);
+  EXPECT_EQ(fieldlines::with_every_feature({}).gradient_threshold, fieldlines::DetectorParams{}.gradient_threshold);
   ASSERT_FALSE(f.project.detector.stripes);  // the project's own detector leaves the stages off
 
   fs::ProjectDetection detection;

@@ -140,6 +140,13 @@ std::string param_default_text(const ParamSpec& spec);
 // A number as the messages and help print it: up to 6 significant digits, no trailing zeros.
 std::string format_param_number(double value);
 
+// `params` with every field feature stage on (stripes, intersections, centre circle): what
+// `--features`, the studio and the benchmark's features row run.
+inline DetectorParams with_every_feature(DetectorParams params) {
+  params.stripes = params.intersections = params.centre_circle = true;
+  return params;
+}
+
 // Validates every field against kDetectorParamSpecs; throws fieldlines::Error
 // "detector parameter <name>: <value> is outside <range>" on the first bad one.
 void validate(const DetectorParams& params);
