@@ -44,7 +44,8 @@ void add_boundary(const FieldBoundary& boundary, const ViewTransform& view, floa
 void add_intersections(std::span<const Intersection> junctions, const ViewTransform& view, float thickness,
                        FeatureDrawing& out) {
   const SegmentStyle style{opaque(palette::kFeature), Stroke::Solid, thickness};
-  const float ring = junction_ring_radius(thickness), tick = junction_tick_length(thickness);
+  const auto ring = static_cast<float>(palette::junction_ring_radius(thickness));
+  const auto tick = static_cast<float>(palette::junction_tick_length(thickness));
   for (const Intersection& j : junctions) {
     if (!finite(j.x, j.y)) continue;
     const Vec2 c = screen(view, j.x, j.y);
@@ -103,9 +104,6 @@ void add_stripes(std::span<const Marking> markings, const ViewTransform& view, f
 float feature_thickness(const ViewSettings& settings, float view_scale) {
   return std::max(1.0f, std::round(settings.segment_width(kBaseThickness, view_scale)));
 }
-
-float junction_ring_radius(float thickness) { return 2 * thickness + 4; }
-float junction_tick_length(float thickness) { return 6 * thickness + 12; }
 
 void build_feature_drawing(const FieldFeatures& features, const FeatureLayers& layers, const ViewTransform& view,
                            const ViewSettings& settings, FeatureDrawing& out) {

@@ -61,9 +61,6 @@ inline constexpr int kEllipseSteps = 64;
 // textured quad rather than three strips of triangles, which a software renderer fills at a
 // fraction of the cost (docs/studio.md, frame time).
 float feature_thickness(const ViewSettings& settings, float view_scale);
-// A junction's ring radius and ray tick end, screen px, for a line `thickness` px wide.
-float junction_ring_radius(float thickness);
-float junction_tick_length(float thickness);
 
 // The primitives for the layers that are on, into `out` (cleared; its capacity is reused, as the
 // view builds it every frame). Features with a non-finite coordinate or an empty size are skipped.

@@ -121,14 +121,14 @@ TEST(FeatureOverlay, AJunctionIsARingItsRayTicksAndItsTypeLetter) {
   const fs::Vec2 centre{10 + 40.5f, 20 + 60.5f};
   EXPECT_EQ(d.rings[0].centre, centre);
   const float thickness = fs::feature_thickness({}, 1);
-  EXPECT_FLOAT_EQ(d.rings[0].radius, fs::junction_ring_radius(thickness));
+  EXPECT_FLOAT_EQ(d.rings[0].radius, fieldlines::palette::junction_ring_radius(thickness));
   EXPECT_EQ(d.rings[0].style.colour, rgba(fieldlines::palette::kFeature));
   // Each tick runs from the ring out along its heading: +x, +y (image down), -x.
   const fs::Vec2 directions[] = {{1, 0}, {0, 1}, {-1, 0}};
   for (std::size_t k = 0; k < 3; ++k) {
     const fs::FeatureLine& tick = d.lines[k];
-    EXPECT_NEAR(length(centre, tick.a), fs::junction_ring_radius(thickness), 1e-3);
-    EXPECT_NEAR(length(centre, tick.b), fs::junction_tick_length(thickness), 1e-3);
+    EXPECT_NEAR(length(centre, tick.a), fieldlines::palette::junction_ring_radius(thickness), 1e-3);
+    EXPECT_NEAR(length(centre, tick.b), fieldlines::palette::junction_tick_length(thickness), 1e-3);
     EXPECT_NEAR((tick.b.x - tick.a.x) / length(tick.a, tick.b), directions[k].x, 1e-5);
     EXPECT_NEAR((tick.b.y - tick.a.y) / length(tick.a, tick.b), directions[k].y, 1e-5);
   }

@@ -123,7 +123,7 @@ void draw_field_features(cv::Mat& canvas, const FieldFeatures& features, const O
     const cv::RotatedRect box(cv::Point2f(e.cx, e.cy), cv::Size2f(e.width, e.height), e.angle_deg);
     stroke([&](const cv::Scalar& c, int t) { cv::ellipse(canvas, box, c, t, cv::LINE_AA); });
   }
-  const double ray_px = 6.0 * thickness + 12, ring_px = 2.0 * thickness + 4;
+  const double ray_px = palette::junction_tick_length(thickness), ring_px = palette::junction_ring_radius(thickness);
   for (const Intersection& j : features.intersections) {
     if (!std::isfinite(j.x) || !std::isfinite(j.y)) continue;
     const cv::Point2d centre(j.x, j.y);

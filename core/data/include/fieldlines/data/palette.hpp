@@ -37,6 +37,10 @@ inline constexpr Rgb kMissedPaint{0, 255, 255};  // cyan
 inline constexpr Rgb kFieldBoundary{255, 255, 255};  // white over the outline: where the green ends
 inline constexpr Rgb kFeature{255, 150, 0};     // orange: centre lines, junctions, the circle (detect --draw)
 inline constexpr float kOutlineExtra = 3;       // outline width = line width + this, pixels
+// A junction's marker for lines `thickness` px wide: a ring of this radius, and a tick per ray
+// from the ring out to the tick length; clear of the lines that meet there.
+constexpr double junction_ring_radius(double thickness) { return 2 * thickness + 4; }
+constexpr double junction_tick_length(double thickness) { return 6 * thickness + 12; }
 
 constexpr Rgb label_rgb(Label label) {
   switch (label) {
