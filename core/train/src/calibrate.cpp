@@ -91,7 +91,10 @@ BoxExpectation expect_box(std::span<const detail::MixtureRow> rows, std::span<co
   return {inside > 0 ? inside_class / inside : 0, class_total > 0 ? inside_class / class_total : 0};
 }
 
-std::string count_text(double mass) { return std::to_string(static_cast<long>(std::lround(mass))); }
+// Edge counts in messages: a class mass holds as many whole edges as it reaches (rounded down: a
+// mass of 7.6 is not the 8 needed), and a need is met by whole edges only (rounded up).
+std::string edges_held(double mass) { return std::to_string(static_cast<long>(std::floor(mass))); }
+std::string edges_needed(double mass) { return std::to_string(static_cast<long>(std::ceil(mass))); }
 
 ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass& cls, double contrast_floor,
                            const CalibrationParams& params, double min_mass, const char* no_mode,
@@ -127,9 +130,8 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   if (!m || m->class_mass < min_mass) {
     out.class_mass = m ? m->class_mass : 0;
     out.refused = std::string(no_mode);
-    // Rounded down: a mass of 7.6 is not the 8 needed.
-    if (m) out.refused += " (" + std::to_string(static_cast<long>(std::floor(m->class_mass))) +
-                          " edges of its colours, at least " + count_text(min_mass) + " needed)";
+    if (m) out.refused += " (" + edges_held(m->class_mass) + " edges of its colours, at least " +
+                          edges_needed(min_mass) + " needed)";
     out.refused += what_to_do;
     return out;
   }
@@ -192,7 +194,7 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   for (std::size_t i = 0; i < x.size(); ++i)
     if (responsibility[i] >= 0.5) member_length.push_back(kept[i].second);
   if (m->class_mass < params.few_edges)
-    out.warning = "few edges of the class (" + count_text(m->class_mass) + "): calibrate on more frames";
+    out.warning = "few edges of the class (" + edges_held(m->class_mass) + "): calibrate on more frames";
   else if (out.expected_precision < params.weak_precision)
     out.warning = "the class overlaps grey edges (expected precision " +
                   std::to_string(std::lround(100 * out.expected_precision)) +
