@@ -9,6 +9,7 @@
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/synth/gt_eval.hpp"
 #include "fieldlines/synth/hand_truth.hpp"
+#include "test_paths.hpp"
 
 namespace fl = fieldlines;
 
@@ -63,7 +64,7 @@ TEST(HandTruth, BadFilesAreClearErrors) {
 }
 
 TEST(HandTruth, EveryCommittedFileLoads) {
-  const std::filesystem::path root = std::filesystem::path(FIELDLINES_SOURCE_DIR) / "tests/data/hand_truth";
+  const std::filesystem::path root = fieldlines::test::source_dir() / "tests/data/hand_truth";
   int files = 0;
   for (const char* set : {"msl-delocht", "msl-bangkok", "msl-bordeaux", "humanoid", "ssl"})
     for (const auto& path : fl::synth::list_hand_truth(root / set)) {

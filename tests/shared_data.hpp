@@ -7,11 +7,9 @@
 
 #include <gtest/gtest.h>
 
-namespace fieldlines::test {
+#include "test_paths.hpp"
 
-inline std::filesystem::path shared_dir() { return FIELDLINES_SHARED_DIR; }
-inline std::filesystem::path source_dir() { return FIELDLINES_SOURCE_DIR; }
-inline std::filesystem::path cli_path() { return FIELDLINES_CLI_PATH; }
+namespace fieldlines::test {
 
 inline bool running_under_ci() {
   const char* ci = std::getenv("CI");

@@ -8,6 +8,7 @@
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
+#include "test_paths.hpp"
 
 namespace fl = fieldlines;
 namespace fs = std::filesystem;
@@ -79,7 +80,7 @@ TEST(ThresholdsFile, KeepsTheStripesAndReadsOldFilesWithThemOff) {
   const fl::ThresholdsFile h = fl::thresholds_file_from_json(old, "old.json");
   EXPECT_FALSE(h.detector.stripes);
   EXPECT_EQ(h.detector, sample().detector);
-  const fl::ThresholdsFile shipped = fl::load_thresholds_file(FIELDLINES_SOURCE_DIR "/assets/default_thresholds.json");
+  const fl::ThresholdsFile shipped = fl::load_thresholds_file(fieldlines::test::source_dir() / "assets/default_thresholds.json");
   EXPECT_FALSE(shipped.detector.stripes);
 
   EXPECT_NE(load_error(R"({"format": "fieldlines-thresholds", "version": 1, "detector": {"stripes": 1},

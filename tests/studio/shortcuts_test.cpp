@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "gui/model/shortcuts.hpp"
+#include "test_paths.hpp"
 
 namespace fs = fieldlines::studio;
 using fs::Action;
@@ -64,12 +65,12 @@ std::vector<Row> markdown_rows(const std::filesystem::path& file, const std::str
 TEST(Shortcuts, TheStudioDocListsExactlyTheTable) {
   const std::vector<Row> expected = table_rows();
   ASSERT_FALSE(expected.empty());
-  EXPECT_EQ(markdown_rows(std::filesystem::path(FIELDLINES_SOURCE_DIR) / "docs/studio.md", "## Labelling"), expected);
+  EXPECT_EQ(markdown_rows(fieldlines::test::source_dir() / "docs/studio.md", "## Labelling"), expected);
 }
 
 TEST(Shortcuts, TheReadmeListsRowsOfTheTableInItsOrder) {
   const std::vector<Row> table = table_rows();
-  const std::vector<Row> readme = markdown_rows(std::filesystem::path(FIELDLINES_SOURCE_DIR) / "README.md", "## The studio");
+  const std::vector<Row> readme = markdown_rows(fieldlines::test::source_dir() / "README.md", "## The studio");
   ASSERT_FALSE(readme.empty()) << "README.md: no \"| Input | Action |\" table under \"## The studio\"";
   auto next = table.begin();
   for (const Row& row : readme) {

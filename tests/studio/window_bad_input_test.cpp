@@ -35,7 +35,7 @@ class StudioBadInput : public studio_test::StudioUnderX {
   // Runs the studio with `args`; `with_display` false leaves DISPLAY unset, so reaching the
   // window would fail with a GLFW message instead of the expected one.
   Outcome run_studio(const std::vector<std::string>& args, bool with_display = false) {
-    std::vector<std::string> argv = {FIELDLINES_STUDIO_PATH};
+    std::vector<std::string> argv = {studio_test::studio_path().string()};
     argv.insert(argv.end(), args.begin(), args.end());
     const fs::path log = dir() / ("run" + std::to_string(++runs_) + ".log");
     std::vector<std::string> env = {"XDG_CONFIG_HOME=" + (dir() / "config").string(),

@@ -259,7 +259,7 @@ TEST_F(StudioWindow, PanelScreenshotsOnTheDemoProject) {
   ASSERT_TRUE(studio->running()) << log();
 
   const char* override_dir = std::getenv("FIELDLINES_SCREENSHOT_DIR");
-  const fs::path docs = override_dir && *override_dir ? fs::path(override_dir) : fs::path(FIELDLINES_SCREENSHOT_DIR);
+  const fs::path docs = override_dir && *override_dir ? fs::path(override_dir) : studio_test::default_screenshot_dir();
   fs::create_directories(docs);
   const char* panels[] = {"Images", "Label", "Thresholds", "Train", "Metrics", "Export"};
   for (int i = 0; i < 6; ++i) {

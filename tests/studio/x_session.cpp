@@ -22,6 +22,9 @@ using namespace std::chrono_literals;
 
 namespace studio_test {
 
+fs::path studio_path() { return FIELDLINES_STUDIO_PATH; }
+fs::path default_screenshot_dir() { return FIELDLINES_SCREENSHOT_DIR; }
+
 Child::Child(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env, const fs::path& log) {
   std::vector<std::string> env;
   for (char** e = environ; *e; ++e) env.emplace_back(*e);
@@ -150,7 +153,7 @@ void StudioUnderX::use_project(int images, int segments) {
 std::unique_ptr<Child> StudioUnderX::start_studio() {
   fs::remove(state_);
   auto child = std::make_unique<Child>(
-      std::vector<std::string>{FIELDLINES_STUDIO_PATH, project_.string(), "--window-size",
+      std::vector<std::string>{studio_path().string(), project_.string(), "--window-size",
                                std::to_string(kWidth) + "x" + std::to_string(kHeight), "--state-file", state_.string()},
       // A private config and data folder: recent projects and the demo never touch the user's.
       std::vector<std::string>{"DISPLAY=" + display_.name, "XDG_CONFIG_HOME=" + (dir_.path() / "config").string(),

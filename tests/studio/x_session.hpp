@@ -22,6 +22,12 @@
 
 namespace studio_test {
 
+// The built studio, and where screenshots go unless $FIELDLINES_SCREENSHOT_DIR says otherwise:
+// compiled into x_session.cpp alone, so the window tests' objects do not depend on the clone's
+// path (tests/test_paths.hpp says why).
+std::filesystem::path studio_path();
+std::filesystem::path default_screenshot_dir();
+
 // A child process with stdout/stderr appended to `log`; killed (SIGKILL) and reaped by the
 // destructor if still running.
 class Child {
