@@ -155,6 +155,7 @@ void add_data_file(Inputs& in, const std::string& path) {
 Inputs gather(const std::vector<std::string>& paths, const DetectorParams& params, const Thresholds& start,
               int every, bool quiet, FieldContrast* contrast = nullptr, bool again = false) {
   Inputs in;
+  in.data.check_stripes(params);
   LineDetector detector(for_fitting(params), start);
   visit_inputs(paths, every, quiet,
                {.frame =
@@ -235,7 +236,8 @@ int cmd_calibrate(const Args& args) {
   const nlohmann::json& detector_report = venue.provenance;
   const Thresholds start = in.data.image_settings(config.thresholds, !a.flag("--no-light-adaptation"));
   const auto t1 = std::chrono::steady_clock::now();
-  Calibration fit = calibrate(in.data.segments(), start, {}, in.data.boundary_candidates());
+  Calibration fit = calibrate(in.data.segments(), start, {}, in.data.boundary_candidates(),
+                              in.data.marking_candidates());
   keep_given_markings(fit, start, in.data.frames_with_field());
   const double fit_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
   const double gather_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();

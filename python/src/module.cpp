@@ -215,9 +215,10 @@ py::dict calibrate_images(const py::object& images, const py::object& thresholds
       detector_report = detector_provenance(contrast, chosen, contrast.frames() > 0);
     }
     LineDetector detector(for_fitting(chosen), start.thresholds);
+    inputs.check_stripes(chosen);
     for (const cv::Mat& view : views) inputs.add_image(detector, view);
     adapted = inputs.image_settings(start.thresholds, true);
-    fit = calibrate(inputs.segments(), adapted, {}, inputs.boundary_candidates());
+    fit = calibrate(inputs.segments(), adapted, {}, inputs.boundary_candidates(), inputs.marking_candidates());
     keep_given_markings(fit, adapted, inputs.frames_with_field());
   }
   try {

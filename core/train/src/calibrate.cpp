@@ -58,6 +58,7 @@ double projection_floor(double contrast_floor, double angle_deg) {
 
 struct Measured {
   double angle, projection, length;
+  bool candidate = true;  // fitted on (boundary: along the field boundary; marking: a stripe)
 };
 
 // The first angle right of the class mean (0.01 deg grid) where the class no longer dominates
@@ -96,9 +97,18 @@ BoxExpectation expect_box(std::span<const detail::MixtureRow> rows, std::span<co
 std::string edges_held(double mass) { return std::to_string(static_cast<long>(std::floor(mass))); }
 std::string edges_needed(double mass) { return std::to_string(static_cast<long>(std::ceil(mass))); }
 
+// What differs between the classes' fits.
+struct ClassRules {
+  double min_mass;         // below: no mode
+  const char* no_mode;     // the refusal's cause
+  const char* what_to_do;  // and what to do about it
+  bool use_contrast;       // may the contrast tell it from grey edges (white paint: yes)
+  bool on_stripes;         // the rows are stripes: geometry, not the colour, kept grey edges out
+};
+
 ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass& cls, double contrast_floor,
-                           const CalibrationParams& params, double min_mass, const char* no_mode,
-                           const char* what_to_do, bool use_contrast) {
+                           const CalibrationParams& params, const ClassRules& rules) {
+  const auto& [min_mass, no_mode, what_to_do, use_contrast, on_stripes] = rules;
   ClassCalibration out;
   out.achromatic_deg = achromatic_angle_deg(cls);
   const double theta_a = out.achromatic_deg;
@@ -108,9 +118,11 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   // Sorted, so that the sums of the EM (and so every bit of the result) do not depend on the
   // order the segments came in.
   std::vector<std::pair<detail::MixtureRow, double>> kept;  // (row, length)
+  const auto in_window = [&](const Measured& r) {
+    return r.projection >= fit_floor && r.projection > 0 && r.angle <= x_max;
+  };
   for (const Measured& r : rows)
-    if (r.projection >= fit_floor && r.projection > 0 && r.angle <= x_max)
-      kept.push_back({{r.angle, std::log(r.projection)}, r.length});
+    if (r.candidate && in_window(r)) kept.push_back({{r.angle, std::log(r.projection)}, r.length});
   std::sort(kept.begin(), kept.end(), [](const auto& a, const auto& b) {
     return std::tie(a.first.angle, a.first.log_projection, a.second) <
            std::tie(b.first.angle, b.first.log_projection, b.second);
@@ -139,9 +151,14 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   const auto log_floor_at = [&](double angle) {
     return std::log(std::max(projection_floor(contrast_floor, angle), 1e-6));
   };
-  const std::optional<double> colour_cut = angle_cut(*m, 0);
+  // Fitted on stripes, the class is paint by geometry: its colour cut holds however close to the
+  // grey spike it lies (pale paint's edges sit there), up to the spike's margin where the class
+  // dominates that far, over the noise floor. A contrast box would cut the weaker paint edges
+  // that the stripe check keeps.
+  const std::optional<double> colour_cut =
+      on_stripes ? std::min(angle_cut(*m, 0).value_or(angle_cap), angle_cap) : angle_cut(*m, 0);
   const bool colour_separates =
-      colour_cut && *colour_cut - m->class_angle.mean >= params.min_separation * m->class_angle.sd;
+      colour_cut && (on_stripes || *colour_cut - m->class_angle.mean >= params.min_separation * m->class_angle.sd);
   if (!colour_separates && !use_contrast) {
     out.class_mass = m->class_mass;
     out.refused = std::string(no_mode) + ": its edges cannot be told from grey edges" + what_to_do;
@@ -153,6 +170,7 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
     return out;
   }
   out.used_contrast = !colour_separates;
+  out.on_stripes = on_stripes;
   out.mean_deg = m->class_angle.mean;
   out.sd_deg = m->class_angle.sd;
   out.achromatic_scale_deg = m->achromatic_scale;
@@ -190,9 +208,13 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
   }
   out.expected_precision = expected.precision;
   out.expected_recall = expected.recall;
+  // Of stripes, the lengths of every row the class claims, stripes or not: stripes are the
+  // longer pieces (a short one has few profiles to pass), and the robot checks each one anyway.
   std::vector<double> member_length;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (responsibility[i] >= 0.5) member_length.push_back(kept[i].second);
+  for (const Measured& r : rows)
+    if ((r.candidate || on_stripes) && in_window(r) &&
+        m->class_responsibility({r.angle, std::log(r.projection)}) >= 0.5)
+      member_length.push_back(r.length);
   if (m->class_mass < params.few_edges)
     out.warning = "few edges of the class (" + edges_held(m->class_mass) + "): calibrate on more frames";
   else if (out.expected_precision < params.weak_precision)
@@ -211,10 +233,12 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
 }  // namespace
 
 Calibration calibrate(std::span<const Segment> segments, const Thresholds& start, const CalibrationParams& params,
-                      std::span<const std::uint8_t> boundary_candidates) {
-  if (!boundary_candidates.empty() && boundary_candidates.size() != segments.size())
-    throw Error("calibrate: " + std::to_string(boundary_candidates.size()) + " boundary flags for " +
-                std::to_string(segments.size()) + " segments");
+                      std::span<const std::uint8_t> boundary_candidates,
+                      std::span<const std::uint8_t> marking_candidates) {
+  for (const auto& [flags, what] : {std::pair{boundary_candidates, "boundary"}, {marking_candidates, "marking"}})
+    if (!flags.empty() && flags.size() != segments.size())
+      throw Error("calibrate: " + std::to_string(flags.size()) + " " + what + " flags for " +
+                  std::to_string(segments.size()) + " segments");
   Calibration out;
   out.segments = segments.size();
   if (segments.size() < params.min_segments) {
@@ -236,16 +260,20 @@ Calibration calibrate(std::span<const Segment> segments, const Thresholds& start
     const Segment& s = segments[i];
     normal_norms.push_back(normal_gradient_norm(s));
     const SegmentFeatures f = compute_features(s, start);
-    if (boundary_candidates.empty() || boundary_candidates[i])
-      boundary.push_back({f.boundary.angle_deg, f.boundary.projection, f.length});
+    boundary.push_back({f.boundary.angle_deg, f.boundary.projection, f.length,
+                        boundary_candidates.empty() || boundary_candidates[i] != 0});
     // For a straight edge grad_x and grad_y are one colour vector scaled by the normal's
     // components: the dominant one measures the same angle with less noise.
     const int m = f.marking_count == 2 && norm3(s.grad_x) > norm3(s.grad_y) ? 1 : 0;
-    marking.push_back({f.marking[m].angle_deg, f.marking[m].projection, f.length});
+    marking.push_back({f.marking[m].angle_deg, f.marking[m].projection, f.length,
+                       marking_candidates.empty() || marking_candidates[i] != 0});
   }
+  const bool stripes = std::find(marking_candidates.begin(), marking_candidates.end(), 0) != marking_candidates.end();
   out.contrast_floor = percentile(normal_norms, params.floor_percentile);
-  out.marking = fit_class(marking, start.marking, out.contrast_floor, params, params.min_class_mass, kNoMarkings, kMarkingsToDo, true);
-  out.boundary = fit_class(boundary, start.boundary, out.contrast_floor, params, params.min_boundary_mass, kNoBoundary, "", false);
+  out.marking = fit_class(marking, start.marking, out.contrast_floor, params,
+                          {params.min_class_mass, kNoMarkings, kMarkingsToDo, true, stripes});
+  out.boundary = fit_class(boundary, start.boundary, out.contrast_floor, params,
+                           {params.min_boundary_mass, kNoBoundary, "", false, false});
   return out;
 }
 
@@ -274,7 +302,7 @@ nlohmann::json calibration_provenance(const Calibration& c) {
     return nlohmann::json{{"achromatic_deg", k.achromatic_deg}, {"mean_deg", k.mean_deg},
                           {"sd_deg", k.sd_deg}, {"achromatic_scale_deg", k.achromatic_scale_deg},
                           {"class_mass", k.class_mass}, {"separation", k.separation},
-                          {"used_contrast", k.used_contrast}, {"contrast_mean", k.contrast_mean}, {"grey_contrast_mean", k.grey_contrast_mean},
+                          {"used_contrast", k.used_contrast}, {"on_stripes", k.on_stripes}, {"contrast_mean", k.contrast_mean}, {"grey_contrast_mean", k.grey_contrast_mean},
                           {"expected_precision", k.expected_precision}, {"expected_recall", k.expected_recall},
                           {"fit_rows", k.fit_rows}, {"iterations", k.iterations},
                           {"fitted", k.thresholds.has_value() && !k.kept_given}, {"kept_given", k.kept_given},

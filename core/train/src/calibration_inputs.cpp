@@ -22,12 +22,27 @@ void CalibrationInputs::add_image(LineDetector& detector, const cv::Mat& image) 
   } else {
     boundary_candidate_.insert(boundary_candidate_.end(), found_.size(), 1);
   }
+  add_marking_candidates(image, detector.field_colour());
   segments_.insert(segments_.end(), found_.begin(), found_.end());
+}
+
+void CalibrationInputs::add_marking_candidates(const cv::Mat& image, const std::optional<Rgb>& field) {
+  // Unchecked (every segment may be a marking) where the robot would not check either: stripes
+  // off, or a frame without a field or in another pixel format, where the check keeps nothing.
+  if (!stripe_params_.stripes || !field || image.type() != CV_8UC3) {
+    marking_candidate_.insert(marking_candidate_.end(), found_.size(), 1);
+    return;
+  }
+  checked_ = found_;
+  for (Segment& s : checked_) s.label = Label::Marking;
+  find_stripes(image, field, checked_, stripe_params_, stripe_work_, stripes_);
+  for (const Segment& s : checked_) marking_candidate_.push_back(s.label == Label::Marking);
 }
 
 void CalibrationInputs::add_segments(std::span<const Segment> segments) {
   segments_.insert(segments_.end(), segments.begin(), segments.end());
   boundary_candidate_.insert(boundary_candidate_.end(), segments.size(), 1);
+  marking_candidate_.insert(marking_candidate_.end(), segments.size(), 1);
 }
 
 Thresholds CalibrationInputs::image_settings(Thresholds start, bool light) {

@@ -65,6 +65,7 @@ struct ClassCalibration {
   double class_mass = 0;                      // segments the EM gives the class
   double separation = 0;                      // (max_angle - mean) / sd
   bool used_contrast = false;                 // the colours did not separate: the contrast did
+  bool on_stripes = false;                    // fitted on stripes alone (the marking candidates)
   double contrast_mean = 0;                   // the class's typical projection (geometric mean)
   double grey_contrast_mean = 0;              // the grey edges' typical projection
   double expected_precision = 0;              // of the box, under the fitted mixture
@@ -82,9 +83,11 @@ struct Calibration {
 
 // Fits both classes of `start` (its colours, sidedness and gradient mode are kept). With
 // `boundary_candidates` (one flag per segment, CalibrationInputs gives them) the boundary class
-// is fitted on the flagged segments alone: those along their frame's field boundary.
+// is fitted on the flagged segments alone: those along their frame's field boundary. Likewise
+// the marking class on `marking_candidates`: the stripes, where the detector checks them; then 
 Calibration calibrate(std::span<const Segment> segments, const Thresholds& start = {},
-                      const CalibrationParams& params = {}, std::span<const std::uint8_t> boundary_candidates = {});
+                      const CalibrationParams& params = {}, std::span<const std::uint8_t> boundary_candidates = {},
+                      std::span<const std::uint8_t> marking_candidates = {});
 
 // Thresholds that never pass: what a class the data do not show gets, so that a field without a
 // boundary wall does not mark furniture as one.

@@ -15,6 +15,7 @@
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/field_boundary.hpp"
 #include "fieldlines/detect/segment.hpp"
+#include "fieldlines/detect/stripes.hpp"
 
 namespace fieldlines {
 
@@ -27,6 +28,10 @@ class CalibrationInputs {
   void add_image(LineDetector& detector, const cv::Mat& image);
   // Segments without an image (a project or reference CSV): no field colour, never rescaled.
   void add_segments(std::span<const Segment> segments);
+  // With `params.stripes` on, each imaged frame's segments are checked as stripes (stripes.hpp,
+  // with these parameters) as they are added: the robot's detector drops every marking that is
+  // none, so the marking class is fitted on the stripes alone. Off (the default): no check.
+  void check_stripes(const DetectorParams& params) { stripe_params_ = params; }
 
   // What the images add to `start`, call once after the last add. Where frames showed a field:
   // the field boundary gate on (field_boundary.hpp) and, with `light`, each imaged
@@ -38,6 +43,9 @@ class CalibrationInputs {
   // Per segment: may it be a boundary edge (along its frame's field boundary, or from an input
   // without an image)? calibrate() fits the boundary class on these alone.
   const std::vector<std::uint8_t>& boundary_candidates() const { return boundary_candidate_; }
+  // Per segment: may it be a marking (a stripe, or not checked: no stripe check, no image, no
+  // field in its frame)? calibrate() fits the marking class on these alone.
+  const std::vector<std::uint8_t>& marking_candidates() const { return marking_candidate_; }
   std::size_t frames() const { return frames_; }                         // every add_image
   std::size_t frames_with_field() const { return fields_.size(); }
 
@@ -46,8 +54,13 @@ class CalibrationInputs {
     std::size_t begin, end;  // the frame's segments
     Rgb colour;
   };
-  std::vector<Segment> segments_, found_;
-  std::vector<std::uint8_t> boundary_candidate_;
+  void add_marking_candidates(const cv::Mat& image, const std::optional<Rgb>& field);
+
+  std::vector<Segment> segments_, found_, checked_;
+  std::vector<std::uint8_t> boundary_candidate_, marking_candidate_;
+  DetectorParams stripe_params_;
+  StripeWorkspace stripe_work_;
+  std::vector<Marking> stripes_;
   std::vector<Field> fields_;
   std::size_t frames_ = 0;
 };
