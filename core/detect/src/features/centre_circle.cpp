@@ -22,7 +22,7 @@ constexpr float kMinCoverage = 150.f / 360;  // less was a corner and a stray pi
 constexpr float kMinSemiAxisPx = 4;
 constexpr float kMaxAxisRatio = 12;  // a circle seen at 5 degrees above the turf
 constexpr float kMaxTangentSin = 0.342f;  // sin(20 degrees)
-constexpr std::size_t kMaxPairPieces = 40;  // the longest pieces that seed pair hypotheses
+constexpr std::size_t kMaxPairPieces = 24;  // the longest pieces: pair hypotheses and their support
 constexpr int kMinSupport = 4;              // pieces along a pair's ellipse
 
 // A conic A u^2 + B uv + C v^2 + D u + E v + F = 0 in coordinates centred on (mx, my) and scaled
@@ -199,11 +199,14 @@ bool along(const Fit& fit, const Marking& m, float tolerance) {
   return norm > 0 && std::abs(gu * dx + gv * dy) <= kMaxTangentSin * norm;
 }
 
-// Marks in `support` the pieces along `fit` and gathers their samples; their count.
-int gather_support(std::span<const Marking> pieces, const Fit& fit, float tolerance, CircleWorkspace& work) {
+// Marks in `support` which of the `longest` longest pieces (work.order) lie along `fit` and
+// gathers their samples; their count.
+int gather_support(std::span<const Marking> pieces, const Fit& fit, float tolerance, std::size_t longest,
+                   CircleWorkspace& work) {
   work.points.clear();
   int count = 0;
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
+  for (std::size_t k = 0; k < longest; ++k) {
+    const auto i = static_cast<std::size_t>(work.order[k]);
     work.support[i] = along(fit, pieces[i], tolerance);
     if (work.support[i]) add_samples(pieces[i], work.points), ++count;
   }
@@ -238,7 +241,7 @@ float fit_from_pairs(std::span<const Marking> pieces, CircleWorkspace& work, Fit
       add_samples(pieces[static_cast<std::size_t>(work.order[j])], work.points);
       Fit fit;
       if (!fit_conic(work.points, fit, true)) continue;
-      const int count = gather_support(pieces, fit, tolerance, work);
+      const int count = gather_support(pieces, fit, tolerance, m, work);
       if (count < kMinSupport) continue;
       const float share = coverage(work.points, fit);
       if (share > best_share || (share == best_share && count > best_count))
@@ -254,13 +257,13 @@ float fit_from_pairs(std::span<const Marking> pieces, CircleWorkspace& work, Fit
   if (!fit_conic(work.points, best, true)) return 0;
   float share = 0;
   for (int round = 0; round < 2; ++round) {
-    if (gather_support(pieces, best, tolerance, work) < kMinSupport) return 0;
+    if (gather_support(pieces, best, tolerance, n, work) < kMinSupport) return 0;
     Fit refined;
     share = fit_and_check(work.points, tolerance, refined);
     if (share <= 0) return 0;
     best = refined;
   }
-  return gather_support(pieces, best, tolerance, work) < kMinSupport ? 0 : share;
+  return gather_support(pieces, best, tolerance, n, work) < kMinSupport ? 0 : share;
 }
 
 }  // namespace
