@@ -3,6 +3,7 @@
 // centre and axes, also from pieces that lie apart; straight lines and corners are none; bad
 // input never crashes.
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -116,12 +117,17 @@ TEST(CentreCircle, BadInputGivesNoneAndNeverCrashes) {
   }
   for (const cv::Scalar& colour : {kTurf, kPaint})
     EXPECT_TRUE(features(noisy(cv::Mat(240, 320, CV_8UC3, colour))).ellipses.empty());
-  // Degenerate pieces: zero length, coincident, collinear.
+  // Degenerate pieces: zero length, coincident, collinear, not a number.
   CircleWorkspace work;
   std::vector<MarkingEllipse> out;
   const std::vector<Marking> odd{{5, 5, 5, 5, 3}, {5, 5, 5, 5, 3}, {0, 0, 10, 0, 2}, {10, 0, 20, 0, 2},
                                  {20, 0, 30, 0, 2}};
   find_centre_circle(odd, work, out);
+  EXPECT_TRUE(out.empty());
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<Marking> with_nan(odd);
+  for (int k = 0; k < 30; ++k) with_nan.push_back({nan, float(k), 10, float(k), 2});
+  find_centre_circle(with_nan, work, out);
   EXPECT_TRUE(out.empty());
   find_centre_circle({}, work, out);
   EXPECT_TRUE(out.empty());

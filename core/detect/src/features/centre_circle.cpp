@@ -223,8 +223,13 @@ float fit_from_pairs(std::span<const Marking> pieces, CircleWorkspace& work, Fit
   work.order.resize(n);
   for (std::size_t i = 0; i < n; ++i) work.order[i] = static_cast<int>(i);
   const std::size_t m = std::min(n, kMaxPairPieces);
+  // A piece of no finite length sorts last (NaN would break the ordering).
+  const auto key = [&](int i) {
+    const float l = length(pieces[static_cast<std::size_t>(i)]);
+    return std::isfinite(l) ? l : -1.f;
+  };
   std::partial_sort(work.order.begin(), work.order.begin() + static_cast<std::ptrdiff_t>(m), work.order.end(),
-                    [&](int a, int b) { return length(pieces[static_cast<std::size_t>(a)]) > length(pieces[static_cast<std::size_t>(b)]); });
+                    [&](int a, int b) { return key(a) > key(b); });
   work.support.assign(n, 0);
   float best_share = 0;
   int best_count = 0, best_i = -1, best_j = -1;
