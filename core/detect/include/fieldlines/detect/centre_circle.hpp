@@ -1,5 +1,6 @@
 #pragma once
-// The centre circle as an image ellipse, from short stripe pieces that chain smoothly.
+// The centre circle as an image ellipse, from short stripe pieces: chains that bend smoothly,
+// and pairs with the pieces along them.
 //
 // The detector's minimum segment length (40 px in the method's configuration) leaves no straight
 // piece on a curve that bends quickly in the image. With `centre_circle` on, the frame is drawn
