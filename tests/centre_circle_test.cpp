@@ -1,7 +1,10 @@
 // The centre circle (centre_circle.hpp) on synthetic frames with known answers: a circle seen
 // in perspective (an ellipse drawn on turf, the halfway line through it) is one ellipse with its
-// centre and axes; straight lines and corners are none; bad input never crashes.
+// centre and axes, also from pieces that lie apart; straight lines and corners are none; bad
+// input never crashes.
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -76,6 +79,33 @@ TEST(CentreCircle, StraightLinesAndCornersAreNoCircle) {
   EXPECT_TRUE(features(noisy(clean, 9)).ellipses.empty());
 }
 
+// A far, flat circle whose pieces lie apart (faint paint, a robot in front): no two chain, yet
+// any two of them give its ellipse, and the halfway line's piece across it is no part of it.
+TEST(CentreCircle, AFlatCircleOfPiecesThatDoNotChain) {
+  const cv::Point2f centre(320, 200);
+  const float a = 200, b = 40;  // semi-axes: a circle seen from 11 degrees above the turf
+  const auto at = [&](float deg) {
+    const float t = deg * std::numbers::pi_v<float> / 180;
+    return cv::Point2f(centre.x + a * std::cos(t), centre.y + b * std::sin(t));
+  };
+  std::vector<Marking> pieces;
+  for (float start = 0; start < 360; start += 50) {  // 20 degrees of turn, 30 of gap
+    const cv::Point2f p = at(start), q = at(start + 20);
+    pieces.push_back({p.x, p.y, q.x, q.y, 3});
+  }
+  pieces.push_back({315, 120, 325, 280, 4});  // the halfway line
+  CircleWorkspace work;
+  std::vector<MarkingEllipse> out;
+  find_centre_circle(pieces, work, out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_LE(std::hypot(out[0].cx - centre.x, out[0].cy - centre.y), 0.1f * std::sqrt(a * b));
+  EXPECT_NEAR(std::max(out[0].width, out[0].height), 2 * a, 0.1f * 2 * a);
+  EXPECT_NEAR(std::min(out[0].width, out[0].height), 2 * b, 0.2f * 2 * b);
+  ASSERT_EQ(work.on_ellipse.size(), pieces.size());
+  EXPECT_FALSE(work.on_ellipse.back()) << "the halfway line's piece is no arc";
+  EXPECT_TRUE(work.on_ellipse.front());
+}
+
 TEST(CentreCircle, BadInputGivesNoneAndNeverCrashes) {
   cv::Mat grey(240, 320, CV_8UC3, cv::Scalar(110, 110, 110));  // no green
   cv::ellipse(grey, cv::RotatedRect(cv::Point2f(160, 120), cv::Size2f(200, 90), 0), kPaint, 5);
@@ -87,12 +117,17 @@ TEST(CentreCircle, BadInputGivesNoneAndNeverCrashes) {
   }
   for (const cv::Scalar& colour : {kTurf, kPaint})
     EXPECT_TRUE(features(noisy(cv::Mat(240, 320, CV_8UC3, colour))).ellipses.empty());
-  // Degenerate pieces: zero length, coincident, collinear.
+  // Degenerate pieces: zero length, coincident, collinear, not a number.
   CircleWorkspace work;
   std::vector<MarkingEllipse> out;
   const std::vector<Marking> odd{{5, 5, 5, 5, 3}, {5, 5, 5, 5, 3}, {0, 0, 10, 0, 2}, {10, 0, 20, 0, 2},
                                  {20, 0, 30, 0, 2}};
   find_centre_circle(odd, work, out);
+  EXPECT_TRUE(out.empty());
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<Marking> with_nan(odd);
+  for (int k = 0; k < 30; ++k) with_nan.push_back({nan, float(k), 10, float(k), 2});
+  find_centre_circle(with_nan, work, out);
   EXPECT_TRUE(out.empty());
   find_centre_circle({}, work, out);
   EXPECT_TRUE(out.empty());

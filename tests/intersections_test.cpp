@@ -1,6 +1,7 @@
 // Intersections (intersections.hpp) on synthetic frames with known answers: a T, an X and an L
 // of painted lines on turf, each found once with its type, centre and ray headings; pieces of
-// one junction merge; bad input gives none and never crashes.
+// one junction merge; an acute far corner is an L and a curve's chords are none; bad input
+// gives none and never crashes.
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -125,6 +126,25 @@ TEST(Intersections, PiecesOfOneJunctionMerge) {
   EXPECT_NEAR(out[0].heading_rays[2], kPi, 0.02);
 
   find_intersections({}, intersections_on(), work, out);
+  EXPECT_TRUE(out.empty());
+}
+
+// A far corner in perspective: two long arms 20 degrees apart are an L; a short stub 16 degrees
+// off an arm (the next chord of a curve overlapping the last) is no junction.
+TEST(Intersections, AnAcuteFarCornerIsAnLAndACurveIsNot) {
+  IntersectionWorkspace work;
+  std::vector<Intersection> out;
+  const float t = 20 * kPi / 180;
+  const std::vector<Marking> corner{{100, 200, 400, 200, 3}, {100, 200, 100 + 300 * std::cos(t), 200 - 300 * std::sin(t), 3}};
+  find_intersections(corner, intersections_on(), work, out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].type, JunctionType::L);
+  EXPECT_NEAR(out[0].x, 100, 2);
+  EXPECT_NEAR(out[0].y, 200, 2);
+
+  const float s = 16 * kPi / 180;
+  const std::vector<Marking> chords{{100, 200, 312, 200, 3}, {300, 200, 300 + 100 * std::cos(s), 200 + 100 * std::sin(s), 3}};
+  find_intersections(chords, intersections_on(), work, out);
   EXPECT_TRUE(out.empty());
 }
 

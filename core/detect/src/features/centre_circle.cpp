@@ -21,6 +21,9 @@ constexpr int kCoverageBins = 36;
 constexpr float kMinCoverage = 150.f / 360;  // less was a corner and a stray piece as often as a circle
 constexpr float kMinSemiAxisPx = 4;
 constexpr float kMaxAxisRatio = 12;  // a circle seen at 5 degrees above the turf
+constexpr float kMaxTangentSin = 0.342f;  // sin(20 degrees)
+constexpr std::size_t kMaxPairPieces = 24;  // the longest pieces: pair hypotheses and their support
+constexpr int kMinSupport = 4;              // pieces along a pair's ellipse
 
 // A conic A u^2 + B uv + C v^2 + D u + E v + F = 0 in coordinates centred on (mx, my) and scaled
 // by s (u = (x - mx) / s), and the ellipse it is.
@@ -42,19 +45,61 @@ float distance(const Fit& fit, float x, float y) {
   return g > 0 ? static_cast<float>(std::abs(q) / g * fit.s) : 1e9f;
 }
 
-// Least squares over the points marked inlier; false when they make no ellipse.
-bool fit_conic(const std::vector<Point>& points, Fit& fit) {
+// The ellipse of the conic in `fit` (coefficients and frame set); false when it is none, or
+// no circle's image (an axis under 4 px, more than 12:1).
+bool to_ellipse(Fit& fit) {
+  if (fit.b * fit.b - 4 * fit.a * fit.c >= 0) return false;  // a parabola or hyperbola
+  const double det = 4 * fit.a * fit.c - fit.b * fit.b;
+  const double u0 = (fit.b * fit.e - 2 * fit.c * fit.d) / det, v0 = (fit.b * fit.d - 2 * fit.a * fit.e) / det;
+  const double f0 = fit.a * u0 * u0 + fit.b * u0 * v0 + fit.c * v0 * v0 + fit.d * u0 + fit.e * v0 + fit.f;
+  const double theta = 0.5 * std::atan2(fit.b, fit.a - fit.c);
+  const double co = std::cos(theta), si = std::sin(theta);
+  const double la = fit.a * co * co + fit.b * co * si + fit.c * si * si;
+  const double lb = fit.a * si * si - fit.b * co * si + fit.c * co * co;
+  if (!(-f0 / la > 0) || !(-f0 / lb > 0)) return false;  // imaginary
+  const double s = fit.s;
+  fit.theta = static_cast<float>(theta);
+  fit.semi_a = static_cast<float>(std::sqrt(-f0 / la) * s);
+  fit.semi_b = static_cast<float>(std::sqrt(-f0 / lb) * s);
+  fit.ellipse = {.cx = static_cast<float>(fit.mx + u0 * s), .cy = static_cast<float>(fit.my + v0 * s),
+                 .width = 2 * fit.semi_a, .height = 2 * fit.semi_b,
+                 .angle_deg = static_cast<float>(theta * 180 / std::numbers::pi)};
+  const float lo = std::min(fit.semi_a, fit.semi_b), hi = std::max(fit.semi_a, fit.semi_b);
+  return std::isfinite(hi) && lo >= kMinSemiAxisPx && hi <= kMaxAxisRatio * lo;
+}
+
+// Least squares over the points marked inlier; false when they make no ellipse. `aligned`
+// leaves out the uv term (axes along the image's): four unknowns, which two short pieces
+// determine where the full conic's five need three.
+bool fit_conic(const std::vector<Point>& points, Fit& fit, bool aligned = false) {
   double mx = 0, my = 0;
   int n = 0;
   for (const Point& p : points)
     if (p.inlier) mx += p.x, my += p.y, ++n;
-  if (n < 6) return false;
+  if (n < (aligned ? 4 : 6)) return false;
   mx /= n, my /= n;
   double spread = 0;
   for (const Point& p : points)
     if (p.inlier) spread += (p.x - mx) * (p.x - mx) + (p.y - my) * (p.y - my);
   const double s = std::sqrt(spread / n / 2);
   if (!(s > 1e-3)) return false;
+  fit = Fit{};
+  fit.mx = mx, fit.my = my, fit.s = s;
+  if (aligned) {
+    cv::Matx<double, 4, 4> m = cv::Matx<double, 4, 4>::zeros();
+    cv::Matx<double, 4, 1> rhs = cv::Matx<double, 4, 1>::zeros();
+    for (const Point& p : points) {
+      if (!p.inlier) continue;
+      const double u = (p.x - mx) / s, v = (p.y - my) / s;
+      const cv::Matx<double, 4, 1> r(u * u - v * v, u, v, 1);
+      m += r * r.t();
+      rhs += r * (-v * v);
+    }
+    if (std::abs(cv::determinant(m)) < 1e-12) return false;
+    const cv::Matx<double, 4, 1> x = m.solve(rhs, cv::DECOMP_LU);
+    fit.a = x(0), fit.c = 1 - x(0), fit.d = x(1), fit.e = x(2), fit.f = x(3);
+    return to_ellipse(fit);
+  }
   cv::Matx<double, 5, 5> m = cv::Matx<double, 5, 5>::zeros();
   cv::Matx<double, 5, 1> rhs = cv::Matx<double, 5, 1>::zeros();
   for (const Point& p : points) {
@@ -66,38 +111,36 @@ bool fit_conic(const std::vector<Point>& points, Fit& fit) {
   }
   if (std::abs(cv::determinant(m)) < 1e-12) return false;
   const cv::Matx<double, 5, 1> x = m.solve(rhs, cv::DECOMP_LU);
-  fit = Fit{};
   fit.a = x(0), fit.b = x(1), fit.c = 1 - x(0), fit.d = x(2), fit.e = x(3), fit.f = x(4);
-  fit.mx = mx, fit.my = my, fit.s = s;
-  if (fit.b * fit.b - 4 * fit.a * fit.c >= 0) return false;  // a parabola or hyperbola
-  const double det = 4 * fit.a * fit.c - fit.b * fit.b;
-  const double u0 = (fit.b * fit.e - 2 * fit.c * fit.d) / det, v0 = (fit.b * fit.d - 2 * fit.a * fit.e) / det;
-  const double f0 = fit.a * u0 * u0 + fit.b * u0 * v0 + fit.c * v0 * v0 + fit.d * u0 + fit.e * v0 + fit.f;
-  const double theta = 0.5 * std::atan2(fit.b, fit.a - fit.c);
-  const double co = std::cos(theta), si = std::sin(theta);
-  const double la = fit.a * co * co + fit.b * co * si + fit.c * si * si;
-  const double lb = fit.a * si * si - fit.b * co * si + fit.c * co * co;
-  if (!(-f0 / la > 0) || !(-f0 / lb > 0)) return false;  // imaginary
-  fit.theta = static_cast<float>(theta);
-  fit.semi_a = static_cast<float>(std::sqrt(-f0 / la) * s);
-  fit.semi_b = static_cast<float>(std::sqrt(-f0 / lb) * s);
-  fit.ellipse = {.cx = static_cast<float>(mx + u0 * s), .cy = static_cast<float>(my + v0 * s),
-                 .width = 2 * fit.semi_a, .height = 2 * fit.semi_b,
-                 .angle_deg = static_cast<float>(theta * 180 / std::numbers::pi)};
-  const float lo = std::min(fit.semi_a, fit.semi_b), hi = std::max(fit.semi_a, fit.semi_b);
-  return std::isfinite(hi) && lo >= kMinSemiAxisPx && hi <= kMaxAxisRatio * lo;
+  return to_ellipse(fit);
 }
 
 // The share of the ellipse's turn (seen from its centre, in its own axes) the inliers cover.
+// Points come in runs of kSamplesPerPiece per piece: the turn between two inlier samples of one
+// piece is covered too (a long chord of a flat ellipse spans several bins between its samples).
 float coverage(const std::vector<Point>& points, const Fit& fit) {
+  constexpr float two_pi = 2 * std::numbers::pi_v<float>;
   std::array<bool, kCoverageBins> seen{};
   const float co = std::cos(fit.theta), si = std::sin(fit.theta);
-  for (const Point& p : points) {
-    if (!p.inlier) continue;
+  const auto bin_of = [&](const Point& p) {
     const float dx = p.x - fit.ellipse.cx, dy = p.y - fit.ellipse.cy;
     const float phi = std::atan2((-dx * si + dy * co) / fit.semi_b, (dx * co + dy * si) / fit.semi_a);
-    const int bin = static_cast<int>((phi + std::numbers::pi_v<float>) / (2 * std::numbers::pi_v<float>) * kCoverageBins);
-    seen[static_cast<std::size_t>(std::clamp(bin, 0, kCoverageBins - 1))] = true;
+    return std::clamp(static_cast<int>((phi + std::numbers::pi_v<float>) / two_pi * kCoverageBins), 0, kCoverageBins - 1);
+  };
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!points[i].inlier) continue;
+    const int bin = bin_of(points[i]);
+    seen[static_cast<std::size_t>(bin)] = true;
+    if (i % kSamplesPerPiece == 0 || !points[i - 1].inlier) continue;
+    // The shorter way round from the previous sample's bin.
+    const int previous = bin_of(points[i - 1]);
+    int step = bin - previous;
+    if (step > kCoverageBins / 2) step -= kCoverageBins;
+    if (step < -kCoverageBins / 2) step += kCoverageBins;
+    for (int k = 1; k < std::abs(step); ++k) {
+      const int b = (previous + (step > 0 ? k : -k) + kCoverageBins) % kCoverageBins;
+      seen[static_cast<std::size_t>(b)] = true;
+    }
   }
   return static_cast<float>(std::count(seen.begin(), seen.end(), true)) / kCoverageBins;
 }
@@ -140,6 +183,92 @@ float fit_and_check(std::vector<Point>& points, float tolerance, Fit& fit) {
   if (2 * close < static_cast<int>(points.size()) || 4 * inliers < 3 * static_cast<int>(points.size())) return 0;
   const float share = coverage(points, fit);
   return share >= kMinCoverage ? share : 0;
+}
+
+// Whether piece `m` lies along the fitted ellipse: its samples within twice the tolerance and
+// its direction within 20 degrees of the tangent there (a line crossing the ellipse does not).
+bool along(const Fit& fit, const Marking& m, float tolerance) {
+  for (int k = 0; k < kSamplesPerPiece; ++k) {
+    const float t = static_cast<float>(k) / static_cast<float>(kSamplesPerPiece - 1);
+    if (distance(fit, m.x0 + t * (m.x1 - m.x0), m.y0 + t * (m.y1 - m.y0)) > 2 * tolerance) return false;
+  }
+  const double u = ((m.x0 + m.x1) / 2 - fit.mx) / fit.s, v = ((m.y0 + m.y1) / 2 - fit.my) / fit.s;
+  const double gu = 2 * fit.a * u + fit.b * v + fit.d, gv = fit.b * u + 2 * fit.c * v + fit.e;
+  const double dx = m.x1 - m.x0, dy = m.y1 - m.y0;
+  const double norm = std::hypot(gu, gv) * std::hypot(dx, dy);
+  return norm > 0 && std::abs(gu * dx + gv * dy) <= kMaxTangentSin * norm;
+}
+
+// Marks in `support` which of the `longest` longest pieces (work.order) lie along `fit` and
+// gathers their samples; their count.
+int gather_support(std::span<const Marking> pieces, const Fit& fit, float tolerance, std::size_t longest,
+                   CircleWorkspace& work) {
+  work.points.clear();
+  int count = 0;
+  for (std::size_t k = 0; k < longest; ++k) {
+    const auto i = static_cast<std::size_t>(work.order[k]);
+    work.support[i] = along(fit, pieces[i], tolerance);
+    if (work.support[i]) add_samples(pieces[i], work.points), ++count;
+  }
+  return count;
+}
+
+// The hypotheses of pairs: every pair of the longest pieces, fitted with axes along the image's
+// (the camera's roll is small; the general fit on the support lifts it), scored by the turn its
+// support covers. A circle cut into pieces that do not chain (a flat ellipse, a far circle, one
+// drawn in faint paint) is found from any two of its pieces. Returns the best ellipse's share
+// (0: none) and leaves its pieces in `work.support`.
+float fit_from_pairs(std::span<const Marking> pieces, CircleWorkspace& work, Fit& best) {
+  const std::size_t n = pieces.size();
+  work.order.resize(n);
+  for (std::size_t i = 0; i < n; ++i) work.order[i] = static_cast<int>(i);
+  const std::size_t m = std::min(n, kMaxPairPieces);
+  // A piece of no finite length sorts last (NaN would break the ordering).
+  const auto key = [&](int i) {
+    const float l = length(pieces[static_cast<std::size_t>(i)]);
+    return std::isfinite(l) ? l : -1.f;
+  };
+  std::partial_sort(work.order.begin(), work.order.begin() + static_cast<std::ptrdiff_t>(m), work.order.end(),
+                    [&](int a, int b) { return key(a) > key(b); });
+  work.support.assign(n, 0);
+  float best_share = 0;
+  int best_count = 0, best_i = -1, best_j = -1;
+  // Half the pair's mean line width, at least 2.5 px (a piece is a chord: its middle lies inside
+  // the curve).
+  const auto tolerance_of = [&](int i, int j) {
+    return std::max(2.5f, (pieces[static_cast<std::size_t>(i)].width + pieces[static_cast<std::size_t>(j)].width) / 4);
+  };
+  for (std::size_t i = 0; i < m; ++i) {
+    for (std::size_t j = i + 1; j < m; ++j) {
+      const float tolerance = tolerance_of(work.order[i], work.order[j]);
+      work.points.clear();
+      add_samples(pieces[static_cast<std::size_t>(work.order[i])], work.points);
+      add_samples(pieces[static_cast<std::size_t>(work.order[j])], work.points);
+      Fit fit;
+      if (!fit_conic(work.points, fit, true)) continue;
+      const int count = gather_support(pieces, fit, tolerance, m, work);
+      if (count < kMinSupport) continue;
+      const float share = coverage(work.points, fit);
+      if (share > best_share || (share == best_share && count > best_count))
+        best_share = share, best_count = count, best_i = work.order[i], best_j = work.order[j];
+    }
+  }
+  if (best_i < 0) return 0;
+  // The best pair's support, fitted in full; its support again, and once more.
+  const float tolerance = tolerance_of(best_i, best_j);
+  work.points.clear();
+  add_samples(pieces[static_cast<std::size_t>(best_i)], work.points);
+  add_samples(pieces[static_cast<std::size_t>(best_j)], work.points);
+  if (!fit_conic(work.points, best, true)) return 0;
+  float share = 0;
+  for (int round = 0; round < 2; ++round) {
+    if (gather_support(pieces, best, tolerance, n, work) < kMinSupport) return 0;
+    Fit refined;
+    share = fit_and_check(work.points, tolerance, refined);
+    if (share <= 0) return 0;
+    best = refined;
+  }
+  return gather_support(pieces, best, tolerance, n, work) < kMinSupport ? 0 : share;
 }
 
 }  // namespace
@@ -201,38 +330,46 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
       if (share > best_share) best_share = share, best_chain = static_cast<int>(r), best_partner = alone ? -1 : static_cast<int>(q);
     }
   }
-  if (best_chain < 0) return;
-
   // The seed's ellipse, then every other chain whose points lie on it with the seed's (the circle
   // cut by the halfway line or a robot is several chains): each joins when the fit of both still
   // passes and covers more of the turn.
-  const float tolerance = tolerance_of(best_chain);
-  const auto reset = [&] {
-    for (Point& p : work.points) p.inlier = 1;
-  };
-  work.points.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    const int chain = root(work.parent, static_cast<int>(i));
-    if (chain == best_chain || chain == best_partner) add_samples(pieces[i], work.points), work.on_ellipse[i] = 1;
-  }
   Fit fit;
-  float share = fit_and_check(work.points, tolerance, fit);
-  if (share <= 0) return;
-  for (std::size_t r = 0; r < n; ++r) {
-    if (static_cast<int>(r) == best_chain || static_cast<int>(r) == best_partner || work.chain_size[r] == 0) continue;
-    const std::size_t before = work.points.size();
-    for (std::size_t i = 0; i < n; ++i)
-      if (root(work.parent, static_cast<int>(i)) == static_cast<int>(r)) add_samples(pieces[i], work.points);
-    reset();
-    Fit joined;
-    const float joined_share = fit_and_check(work.points, tolerance, joined);
-    if (joined_share > share) {
-      fit = joined, share = joined_share;
-      for (std::size_t i = 0; i < n; ++i)
-        if (root(work.parent, static_cast<int>(i)) == static_cast<int>(r)) work.on_ellipse[i] = 1;
-    } else {
-      work.points.resize(before);
+  float share = 0;
+  if (best_chain >= 0) {
+    const float tolerance = tolerance_of(best_chain);
+    work.points.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      const int chain = root(work.parent, static_cast<int>(i));
+      if (chain == best_chain || chain == best_partner) add_samples(pieces[i], work.points), work.on_ellipse[i] = 1;
     }
+    share = fit_and_check(work.points, tolerance, fit);
+    for (std::size_t r = 0; share > 0 && r < n; ++r) {
+      if (static_cast<int>(r) == best_chain || static_cast<int>(r) == best_partner || work.chain_size[r] == 0) continue;
+      const std::size_t before = work.points.size();
+      for (std::size_t i = 0; i < n; ++i)
+        if (root(work.parent, static_cast<int>(i)) == static_cast<int>(r)) add_samples(pieces[i], work.points);
+      for (Point& p : work.points) p.inlier = 1;
+      Fit joined;
+      const float joined_share = fit_and_check(work.points, tolerance, joined);
+      if (joined_share > share) {
+        fit = joined, share = joined_share;
+        for (std::size_t i = 0; i < n; ++i)
+          if (root(work.parent, static_cast<int>(i)) == static_cast<int>(r)) work.on_ellipse[i] = 1;
+      } else {
+        work.points.resize(before);
+      }
+    }
+  }
+  // The pairs' ellipse when it covers more of the turn than the chains'.
+  Fit paired;
+  const float paired_share = fit_from_pairs(pieces, work, paired);
+  if (paired_share > share) {
+    fit = paired, share = paired_share;
+    work.on_ellipse = work.support;
+  }
+  if (share <= 0) {
+    std::fill(work.on_ellipse.begin(), work.on_ellipse.end(), std::uint8_t{0});
+    return;
   }
   out.push_back(fit.ellipse);
   out.back().confidence = share;

@@ -12,7 +12,9 @@ using Junction = IntersectionWorkspace::Junction;
 using Ray = IntersectionWorkspace::Ray;
 
 constexpr float kReachFloorPx = 4;         // the edge detector's blur at a line's end
-constexpr float kRayMergeCos = 0.9063f;    // cos(25 degrees): rays closer than this are one arm
+constexpr float kRayMergeCos = 0.9063f;    // cos(25 degrees): rays closer than this are one arm...
+constexpr float kLongRayMergeCos = 0.9848f;  // cos(10 degrees): ...unless both are long arms
+constexpr float kLongArmReaches = 3;       // a far corner's arms in perspective: this long and acute
 constexpr float kStraightCos = -0.8660f;   // cos(150 degrees): two rays wider apart are one line
 constexpr float kFullArmWidths = 6;        // an arm this many reaches long counts fully
 
@@ -35,12 +37,15 @@ void add_arms(const Line& l, float t, float reach, Junction& j) {
   if (l.length - t > reach) j.rays[j.num_rays++] = {l.ux, l.uy, l.length - t};
 }
 
-// Folds `ray` into the junction's arm within 25 degrees of it, or appends it.
-void merge_ray(const Ray& ray, Junction& j) {
+// Folds `ray` into the junction's arm within 25 degrees of it (10 when both are long: a far
+// corner seen in perspective is that acute, while a short stub beside an arm is the same line's
+// or a curve's), or appends it.
+void merge_ray(const Ray& ray, float reach, Junction& j) {
   for (int k = 0; k < j.num_rays; ++k) {
     Ray& r = j.rays[static_cast<std::size_t>(k)];
     const float n = std::hypot(r.ux, r.uy);
-    if ((r.ux * ray.ux + r.uy * ray.uy) / n < kRayMergeCos) continue;
+    const bool long_arms = std::min(r.length, ray.length) >= kLongArmReaches * reach;
+    if ((r.ux * ray.ux + r.uy * ray.uy) / n < (long_arms ? kLongRayMergeCos : kRayMergeCos)) continue;
     // A length-weighted mean direction: the longer arm is the better measured.
     r.ux = r.ux / n * r.length + ray.ux * ray.length;
     r.uy = r.uy / n * r.length + ray.uy * ray.length;
@@ -56,7 +61,7 @@ void merge_into(const Junction& c, Junction& j) {
   j.y = (j.y * j.weight + c.y * c.weight) / w;
   j.weight = w;
   j.reach = std::max(j.reach, c.reach);
-  for (int k = 0; k < c.num_rays; ++k) merge_ray(c.rays[static_cast<std::size_t>(k)], j);
+  for (int k = 0; k < c.num_rays; ++k) merge_ray(c.rays[static_cast<std::size_t>(k)], j.reach, j);
 }
 
 float heading(const Ray& r) {
@@ -117,7 +122,9 @@ void find_intersections(std::span<const Marking> markings, const DetectorParams&
       const Line lb = line_of(markings[b]);
       const float cross = la.ux * lb.uy - la.uy * lb.ux;
       if (std::abs(cross) < min_sin) continue;
-      const float reach = std::max(reach_of(la), reach_of(lb));
+      // From the narrower line: a field's lines share one width, and a stripe's width measured
+      // across blur or a merged edge can be several times its paint's.
+      const float reach = std::min(reach_of(la), reach_of(lb));
       // A line shorter than two reaches could not tell ending from passing through.
       if (la.length < 2 * reach || lb.length < 2 * reach) continue;
       const float wx = lb.x - la.x, wy = lb.y - la.y;
@@ -135,7 +142,7 @@ void find_intersections(std::span<const Marking> markings, const DetectorParams&
       } else {
         Junction fresh = c;
         fresh.num_rays = 0;
-        for (int k = 0; k < c.num_rays; ++k) merge_ray(c.rays[static_cast<std::size_t>(k)], fresh);
+        for (int k = 0; k < c.num_rays; ++k) merge_ray(c.rays[static_cast<std::size_t>(k)], fresh.reach, fresh);
         work.junctions.push_back(fresh);
       }
     }

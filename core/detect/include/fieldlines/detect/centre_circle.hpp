@@ -1,5 +1,6 @@
 #pragma once
-// The centre circle as an image ellipse, from short stripe pieces that chain smoothly.
+// The centre circle as an image ellipse, from short stripe pieces: chains that bend smoothly,
+// and pairs with the pieces along them.
 //
 // The detector's minimum segment length (40 px in the method's configuration) leaves no straight
 // piece on a curve that bends quickly in the image. With `centre_circle` on, the frame is drawn
@@ -16,10 +17,19 @@
 // least 4 px, at most 12:1), its points lie on it (the median Sampson distance at most half the
 // line width, at least 2.5 px: a piece is a chord, its middle inside the curve; three quarters
 // within twice that), and they cover at least 150 degrees of it (seen from its centre, in its own
-// axes). The best seed wins; every other chain joins it when the fit of both still passes and
-// covers more of the turn (the circle cut by the halfway line or a robot is several chains). At
-// most one ellipse per frame (there is one centre circle); its confidence is the share of the
-// turn its points cover.
+// axes; a piece covers the turn between its samples). The best seed wins; every other chain
+// joins it when the fit of both still passes and covers more of the turn (the circle cut by the
+// halfway line or a robot is several chains).
+//
+// Pieces of a flat or faint circle often do not chain at all. So every pair of the 24 longest
+// pieces is also a hypothesis: fitted with axes along the image's (four unknowns, which two
+// pieces determine; the camera's roll is small), its support is those pieces along it (their
+// samples within twice the pair's tolerance, their direction within 20 degrees of its tangent:
+// a line crossing the circle is no support), scored by the turn the support covers (at least
+// four pieces). The best pair's support among all pieces is fitted in full and checked as a
+// chain is, twice over; it replaces the chains' ellipse when it covers more of the turn. The
+// cap bounds the cost (at most 276 fits of four unknowns). At most one ellipse per frame (there
+// is one centre circle); its confidence is the share of the turn its points cover.
 //
 // The fit is written out (a 5x5 solve on the stack) rather than cv::fitEllipse, which allocates
 // per call: warm detect allocates nothing with this stage on.
@@ -41,6 +51,8 @@ struct CircleWorkspace {
   std::vector<int> chain_size;     // pieces per chain root
   std::vector<Point> points;       // samples of the chain being fitted
   std::vector<std::uint8_t> on_ellipse;  // per piece: part of the ellipse found
+  std::vector<int> order;                // pieces by length
+  std::vector<std::uint8_t> support;     // per piece: along the ellipse being tried
 };
 
 // Fits the centre circle to `pieces` (stripe centre lines of short segments) into `out`

@@ -7,14 +7,17 @@
 //
 // Two centre lines at more than `intersection_min_angle` degrees to each other meet where their
 // infinite lines cross, when that point lies on both or within a reach of one of their ends:
-// `intersection_reach` times the wider line's width plus 4 px (a line's edges stop short of the
-// paint they run into, by about half the other line's width and the edge detector's blur). Each
-// line gives the junction one ray per side of the crossing on which it extends by more than
-// that reach: a line ending at the crossing gives one ray, a line passing through gives two.
-// Pairs whose crossings lie within that reach of each other are one junction (a line broken at
-// a crossing, several lines of one corner); their rays merge when within 25 degrees. A
-// junction keeps its (at most four) longest rays: 2 are an L, 3 a T, 4 an X; two rays nearly
-// opposite (more than 150 degrees apart, nothing else) are a straight line, not a junction.
+// `intersection_reach` times the narrower line's width plus 4 px (a line's edges stop short of the
+// paint they run into, by about half the other line's width and the edge detector's blur; a
+// field's lines share one width, and the narrower estimate is the one a blurred or merged edge
+// has not widened). Each line gives the junction one ray per side of the crossing on which it
+// extends by more than that reach: a line ending at the crossing gives one ray, a line passing
+// through gives two. Pairs whose crossings lie within that reach of each other are one junction
+// (a line broken at a crossing, several lines of one corner); their rays merge when within 25
+// degrees, or 10 when both are longer than three reaches (a far corner in perspective is that
+// acute; a short stub beside an arm is the same line's end or a curve's next chord). A junction
+// keeps its (at most four) longest rays: 2 are an L, 3 a T, 4 an X; two rays nearly opposite
+// (more than 150 degrees apart, nothing else) are a straight line, not a junction.
 // Buffers are the caller's: no allocation once warm.
 #include <array>
 #include <span>
