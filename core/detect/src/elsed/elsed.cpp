@@ -1,5 +1,7 @@
 #include "elsed.hpp"
 
+#include <algorithm>
+
 #include "colour_gradients.hpp"
 
 namespace fieldlines {
@@ -56,23 +58,42 @@ void ElsedEngine::find_anchors(int scan_interval, int threshold, const cv::Mat& 
     }
     return false;
   };
-  anchors_.clear();
-  // Column by column, as the method scans: the order decides which anchor draws an edge first.
-  for (int x = 1; x < w - 1; x += scan_interval) {
+  // The method scans column by column, and that order decides which anchor draws an edge first.
+  // Columns of a frame stride across cache lines: the grid is read row by row instead (each
+  // row's cache lines shared by its columns and by bright_beside's windows), and the anchors are
+  // then put in column order (within a column they arrive top-down, as the method finds them).
+  const int columns = w > 2 ? (w - 3) / scan_interval + 1 : 0;  // grid columns 1 + k * scan_interval < w - 1
+  column_first_.resize(static_cast<std::size_t>(columns));
+  column_start_.assign(static_cast<std::size_t>(columns) + 1, 0);
+  int top = h;
+  for (int k = 0; k < columns; ++k) {
     // The first grid row (1 + k * scan_interval) at or below the column's first row.
-    const int first = limited ? limits.first_rows[static_cast<std::size_t>(x)] : 1;
+    const int first = limited ? limits.first_rows[static_cast<std::size_t>(1 + k * scan_interval)] : 1;
     const int y0 = first <= 1 ? 1 : 1 + (first - 1 + scan_interval - 1) / scan_interval * scan_interval;
-    for (int y = y0; y < h - 1; y += scan_interval) {
-      const int i = y * w + x;
+    column_first_[static_cast<std::size_t>(k)] = y0;
+    top = std::min(top, y0);
+  }
+  row_anchors_.clear();
+  for (int y = top; y < h - 1; y += scan_interval) {
+    for (int k = 0; k < columns; ++k) {
+      if (y < column_first_[static_cast<std::size_t>(k)]) continue;
+      const int x = 1 + k * scan_interval, i = y * w + x;
       if (g[i] == 0) continue;
       // A local maximum across the edge by at least `threshold`.
       const bool across_rows = dir_of(maps_.state[i]) == EdgeDir::Horizontal;
       const int step = across_rows ? w : 1;
       if (g[i] >= g[i - step] + threshold && g[i] >= g[i + step] + threshold &&
-          (limits.min_bright_sum <= 0 || bright_beside(x, y, across_rows)))
-        anchors_.push_back({x, y});
+          (limits.min_bright_sum <= 0 || bright_beside(x, y, across_rows))) {
+        row_anchors_.push_back({x, y});
+        ++column_start_[static_cast<std::size_t>(k) + 1];
+      }
     }
   }
+  for (int k = 0; k < columns; ++k)
+    column_start_[static_cast<std::size_t>(k) + 1] += column_start_[static_cast<std::size_t>(k)];
+  anchors_.resize(row_anchors_.size());
+  for (const Pixel& a : row_anchors_)
+    anchors_[static_cast<std::size_t>(column_start_[static_cast<std::size_t>((a.x - 1) / scan_interval)]++)] = a;
 }
 
 void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, std::vector<Segment>& out) {

@@ -48,7 +48,10 @@ class ElsedEngine {
   double pass_sigma_ = -1;
   elsed::DrawerParams drawer_params_;  // a member so its junction_sizes keeps its capacity
   elsed::GradientMaps maps_;
-  std::vector<elsed::Pixel> anchors_;
+  std::vector<elsed::Pixel> anchors_;      // in the method's order: column by column, top-down
+  std::vector<elsed::Pixel> row_anchors_;  // find_anchors' scratch: the same, row by row
+  std::vector<int> column_first_;          // find_anchors' scratch: each grid column's first row
+  std::vector<int> column_start_;          // ...and where its anchors start in anchors_
   elsed::EdgeDrawer drawer_;
 };
 
