@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "colour_gradients.hpp"
+#include "features/field_pixel.hpp"
 
 namespace fieldlines {
 
@@ -52,9 +53,7 @@ void ElsedEngine::find_anchors(int scan_interval, int threshold, const cv::Mat& 
       if (px < 0 || py < 0 || px >= w || py >= h) continue;
       const std::uint8_t* p = bgr.ptr<std::uint8_t>(py) + 3 * px;
       const int sum = p[0] + p[1] + p[2];
-      if (sum < limits.min_bright_sum) continue;
-      // Near grey: |R - sum/3| + |G - sum/3| within max_chroma of the sum (times 3: integers).
-      if (std::abs(3 * p[2] - sum) + std::abs(3 * p[1] - sum) <= limits.max_chroma * 3 * sum) return true;
+      if (sum >= limits.min_bright_sum && near_grey(p, sum, limits.max_chroma)) return true;
     }
     return false;
   };

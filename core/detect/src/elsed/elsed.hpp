@@ -30,7 +30,7 @@ class ElsedEngine {
   struct AnchorLimits {
     std::span<const int> first_rows;  // one per column: anchors from that row down; empty: all
     int min_bright_sum = 0;           // a pixel this bright (B + G + R) within 5 px across...
-    float max_chroma = 2;             // ...and this grey (|r - 1/3| + |g - 1/3|, r = R / sum); 2: any
+    float max_chroma = 2;             // ...and this grey (near_grey, field_pixel.hpp); 2: any
   };
   void redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,
               const AnchorLimits& limits, std::vector<Segment>& out);
