@@ -31,13 +31,11 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   std::vector<Marking> arcs;    // the pieces that are stripes
   std::vector<Marking> lines;   // those of them not on the circle
   CircleWorkspace circle;
-  DetectorParams frame;  // the parameters with this frame's gradient threshold (dark_field)
 };
 
 LineDetector::LineDetector(DetectorParams params, Thresholds thresholds)
     : params_(std::move(params)), thresholds_(thresholds), impl_(std::make_unique<Impl>()) {
   validate(params_);
-  impl_->frame = params_;
 }
 LineDetector::~LineDetector() = default;
 LineDetector::LineDetector(LineDetector&&) noexcept = default;
@@ -97,9 +95,9 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   const bool stripes = params_.stripes || pieces;
   if (thresholds_.light.enabled || boundary || stripes || params_.dark_field > 0)
     impl_->field = estimate_field_colour(*bgr);
-  impl_->frame.gradient_threshold =
+  const int gradient_threshold =
       adapted_gradient_threshold(params_.gradient_threshold, params_.dark_field, impl_->field);
-  impl_->engine.run(*bgr, impl_->frame, out);
+  impl_->engine.run(*bgr, params_, gradient_threshold, out);
   std::optional<float> gain;
   if (thresholds_.light.enabled && impl_->field)
     gain = light_gain(thresholds_.light.reference_field, *impl_->field);
@@ -162,7 +160,7 @@ const FieldFeatures& LineDetector::features() const { return impl_->features; }
 LineDetector::GradientViews LineDetector::compute_gradients(const cv::Mat& image) {
   const cv::Mat* bgr = normalise(image);
   if (!bgr) return {};
-  impl_->engine.compute_gradients(*bgr, params_);
+  impl_->engine.compute_gradients(*bgr, params_, params_.gradient_threshold);
   const elsed::GradientMaps& g = impl_->engine.gradients();
   // Views over the engine's buffers: the const_cast only satisfies cv::Mat's constructor.
   const auto view = [&](const std::vector<std::int16_t>& v) {

@@ -13,20 +13,19 @@ using elsed::dir_of;
 using elsed::mark_of;
 using elsed::Pixel;
 
-void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& params) {
+void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold) {
   const auto threads = static_cast<std::size_t>(params.threads);
   if (passes_.size() != threads || params.gaussian_kernel != pass_kernel_ || params.gaussian_sigma != pass_sigma_) {
     passes_.resize(threads);
-    for (elsed::GradientPass& p : passes_)
-      p.configure(params.gaussian_kernel, params.gaussian_sigma, params.gradient_threshold);
+    for (elsed::GradientPass& p : passes_) p.configure(params.gaussian_kernel, params.gaussian_sigma, gradient_threshold);
     pass_kernel_ = params.gaussian_kernel;
     pass_sigma_ = params.gaussian_sigma;
-    pass_threshold_ = params.gradient_threshold;
+    pass_threshold_ = gradient_threshold;
     if (threads == 1) workers_.resize(0);
   }
-  if (params.gradient_threshold != pass_threshold_) {  // a dark field's frame (light.hpp)
-    for (elsed::GradientPass& p : passes_) p.set_threshold(params.gradient_threshold);
-    pass_threshold_ = params.gradient_threshold;
+  if (gradient_threshold != pass_threshold_) {  // a dark field's frame (light.hpp)
+    for (elsed::GradientPass& p : passes_) p.set_threshold(gradient_threshold);
+    pass_threshold_ = gradient_threshold;
   }
   const int h = bgr.rows, bands = passes_.front().band_count(h, params.threads);
   if (bands == 1) {
@@ -95,8 +94,9 @@ void ElsedEngine::find_anchors(int scan_interval, int threshold, const cv::Mat& 
     anchors_[static_cast<std::size_t>(column_start_[static_cast<std::size_t>((a.x - 1) / scan_interval)]++)] = a;
 }
 
-void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, std::vector<Segment>& out) {
-  compute_gradients(bgr, params);
+void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold,
+                      std::vector<Segment>& out) {
+  compute_gradients(bgr, params, gradient_threshold);
 
   // With no anchor at all, retry with a halved threshold (down to zero) like the method.
   int anchor_threshold = params.anchor_threshold;

@@ -19,9 +19,11 @@ namespace fieldlines {
 class ElsedEngine {
  public:
   // bgr: 8-bit, 3 channels, at least 3x3. Appends unclassified segments to `out`.
-  void run(const cv::Mat& bgr, const DetectorParams& params, std::vector<Segment>& out);
+  // `gradient_threshold` stands for params.gradient_threshold: the frame's own (a dark field's
+  // is lower, light.hpp), so that a caller need not copy the parameters per frame.
+  void run(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold, std::vector<Segment>& out);
   // The first stage alone (what run() starts with): fills gradients().
-  void compute_gradients(const cv::Mat& bgr, const DetectorParams& params);
+  void compute_gradients(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold);
   const elsed::GradientMaps& gradients() const { return maps_; }
   // After run() on the same frame: draws it again from anchors every `scan_interval` px, keeping
   // segments from `min_line_length` px (the short pieces of curves), into `out` (cleared first).
