@@ -106,11 +106,11 @@ void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, int grad
     anchor_threshold /= 2;
   }
 
-  draw_and_validate(bgr, params, params.min_line_length, out);
+  draw_and_validate(bgr, params, params.min_line_length, {}, out);
 }
 
 void ElsedEngine::draw_and_validate(const cv::Mat& bgr, const DetectorParams& params, int min_line_length,
-                                    std::vector<Segment>& out) {
+                                    elsed::SegmentFilter keep, std::vector<Segment>& out) {
   elsed::DrawerParams& dp = drawer_params_;
   dp.line_fit_error = params.line_fit_error;
   dp.px_to_segment_dist = params.px_to_segment_dist;
@@ -127,19 +127,19 @@ void ElsedEngine::draw_and_validate(const cv::Mat& bgr, const DetectorParams& pa
   const elsed::ValidationParams vp{params.validation_threshold, params.validate};
   Segment s;
   for (const elsed::LineModel& seg : drawer_.segments()) {
-    if (elsed::validate_segment(seg, drawer_.chain(), maps_, bgr, vp, s)) out.push_back(s);
+    if (elsed::validate_segment(seg, drawer_.chain(), maps_, bgr, vp, s, keep)) out.push_back(s);
   }
 }
 
 void ElsedEngine::redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,
-                         const AnchorLimits& limits, std::vector<Segment>& out) {
+                         const AnchorLimits& limits, elsed::SegmentFilter keep, std::vector<Segment>& out) {
   out.clear();
   if (maps_.width != bgr.cols || maps_.height != bgr.rows) return;  // run() has not seen this frame
   // The first drawing's marks would stop the new one at every pixel it owns: back to Free,
   // keeping each pixel's edge direction.
   for (elsed::PixelState& st : maps_.state) st = elsed::with_mark(st, Mark::Free);
   find_anchors(scan_interval, params.anchor_threshold, bgr, limits);
-  draw_and_validate(bgr, params, min_line_length, out);
+  draw_and_validate(bgr, params, min_line_length, keep, out);
 }
 
 }  // namespace fieldlines

@@ -7,6 +7,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "band_workers.hpp"
+#include "colour_gradients.hpp"
 #include "edge_drawer.hpp"
 #include "elsed_types.hpp"
 #include "gradient_pass.hpp"
@@ -34,12 +35,13 @@ class ElsedEngine {
     int min_bright_sum = 0;           // a pixel this bright (B + G + R) within 5 px across...
     float max_chroma = 2;             // ...and this grey (near_grey, field_pixel.hpp); 2: any
   };
+  // `keep` drops segments by their colours before their validation (colour_gradients.hpp).
   void redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,
-              const AnchorLimits& limits, std::vector<Segment>& out);
+              const AnchorLimits& limits, elsed::SegmentFilter keep, std::vector<Segment>& out);
 
  private:
   void draw_and_validate(const cv::Mat& bgr, const DetectorParams& params, int min_line_length,
-                         std::vector<Segment>& out);
+                         elsed::SegmentFilter keep, std::vector<Segment>& out);
   void find_anchors(int scan_interval, int threshold, const cv::Mat& bgr, const AnchorLimits& limits);
 
   // One pass per thread (each its own scratch rows), all configured alike; passes_[0] runs on
