@@ -33,7 +33,8 @@ class FieldPixel {
 
   // `bgr` points at one 8-bit B, G, R pixel.
   bool field(const std::uint8_t* bgr) const {
-    const float sum = float(bgr[0]) + bgr[1] + bgr[2];
+    // The same value as the float sum of the three (exact either way): one conversion, not three.
+    const float sum = float(bgr[0] + bgr[1] + bgr[2]);
     if (sum < p_.min_brightness * sum_ || sum > p_.max_brightness * sum_) return false;
     return std::abs(bgr[2] / sum - r_) + std::abs(bgr[1] / sum - g_) <= p_.chroma_tolerance;
   }
