@@ -157,7 +157,7 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain) {
   Thresholds short_pieces = thresholds_;
   short_pieces.marking.thresholds.min_length = 0;
   // Only the markings among the pieces are used (find_stripes): a piece whose colours rule that
-  // out is dropped before its validation, half of a piece's cost on turf texture.
+  // out is dropped before its angle test, about half of its validation (most pieces on turf).
   const MarkingColours colours{gain, short_pieces, f.field_boundary};
   impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, {rows, bright, grey},
                        {&MarkingColours::may_be_marking, &colours}, pieces);
