@@ -31,13 +31,11 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   std::vector<Marking> arcs;    // the pieces that are stripes
   std::vector<Marking> lines;   // those of them not on the circle
   CircleWorkspace circle;
-  DetectorParams frame;  // the parameters with this frame's gradient threshold (dark_field)
 };
 
 LineDetector::LineDetector(DetectorParams params, Thresholds thresholds)
     : params_(std::move(params)), thresholds_(thresholds), impl_(std::make_unique<Impl>()) {
   validate(params_);
-  impl_->frame = params_;
 }
 LineDetector::~LineDetector() = default;
 LineDetector::LineDetector(LineDetector&&) noexcept = default;
@@ -83,6 +81,27 @@ void label(std::span<Segment> segments, std::optional<float> gain, const Thresho
   if (thresholds.field_boundary_gate)
     for (Segment& s : segments) s.label = gate_by_field_boundary(s, boundary);
 }
+
+// What label() needs to call a segment a marking and can tell before its validation: the marking
+// class's colour test and the gate. The boundary class, which a marking must fail, also weighs
+// the saliency, which only validation gives: a segment this passes may still not be a marking.
+struct MarkingColours {
+  std::optional<float> gain;
+  const Thresholds& thresholds;  // with marking.thresholds.min_length 0: the length never decides
+  const FieldBoundary& boundary;
+
+  static bool may_be_marking(const void* context, const Segment& segment) {
+    const auto& m = *static_cast<const MarkingColours*>(context);
+    Segment s = segment;
+    if (m.gain) apply_light_gain({&s, 1}, *m.gain);
+    const SegmentFeatures f = compute_features(s, m.thresholds);
+    bool marking = false;
+    for (int i = 0; i < f.marking_count; ++i)
+      marking = marking || passes(f.marking[i], m.thresholds.marking.thresholds.min_length, m.thresholds.marking.thresholds);
+    if (!marking) return false;
+    return !m.thresholds.field_boundary_gate || m.boundary.empty() || place_of(s, m.boundary) != BoundaryPlace::Above;
+  }
+};
 }  // namespace
 
 void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
@@ -97,9 +116,9 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   const bool stripes = params_.stripes || pieces;
   if (thresholds_.light.enabled || boundary || stripes || params_.dark_field > 0)
     impl_->field = estimate_field_colour(*bgr);
-  impl_->frame.gradient_threshold =
+  const int gradient_threshold =
       adapted_gradient_threshold(params_.gradient_threshold, params_.dark_field, impl_->field);
-  impl_->engine.run(*bgr, impl_->frame, out);
+  impl_->engine.run(*bgr, params_, gradient_threshold, out);
   std::optional<float> gain;
   if (thresholds_.light.enabled && impl_->field)
     gain = light_gain(thresholds_.light.reference_field, *impl_->field);
@@ -132,12 +151,16 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain) {
   // boundary's paint (turf texture, shade, bright blades of real grass) draws no stripe.
   const int bright = impl_->field ? static_cast<int>(std::ceil(kPaintContrast * FieldPixel(*impl_->field, {}).field_sum())) : 0;
   const float grey = FieldBoundaryParams{}.paint_chroma;
-  impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, {rows, bright, grey}, pieces);
   // The colour test without its length: shortness is what these pieces are for. (Leaving the
   // colour test to the stripes check alone finds a few more junctions at a fifth more false ones
   // on synthetic fields.)
   Thresholds short_pieces = thresholds_;
   short_pieces.marking.thresholds.min_length = 0;
+  // Only the markings among the pieces are used (find_stripes): a piece whose colours rule that
+  // out is dropped before its angle test, about half of its validation (most pieces on turf).
+  const MarkingColours colours{gain, short_pieces, f.field_boundary};
+  impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, {rows, bright, grey},
+                       {&MarkingColours::may_be_marking, &colours}, pieces);
   label(pieces, gain, short_pieces, f.field_boundary);
   find_stripes(bgr, impl_->field, pieces, params_, impl_->piece_stripes, impl_->arcs);
   std::vector<std::uint8_t>& on_ellipse = impl_->circle.on_ellipse;
@@ -162,7 +185,7 @@ const FieldFeatures& LineDetector::features() const { return impl_->features; }
 LineDetector::GradientViews LineDetector::compute_gradients(const cv::Mat& image) {
   const cv::Mat* bgr = normalise(image);
   if (!bgr) return {};
-  impl_->engine.compute_gradients(*bgr, params_);
+  impl_->engine.compute_gradients(*bgr, params_, params_.gradient_threshold);
   const elsed::GradientMaps& g = impl_->engine.gradients();
   // Views over the engine's buffers: the const_cast only satisfies cv::Mat's constructor.
   const auto view = [&](const std::vector<std::int16_t>& v) {

@@ -36,7 +36,7 @@ Gradient sample(const GradientMaps& maps, float x, float y) {
 }  // namespace
 
 bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, const GradientMaps& maps,
-                      const cv::Mat& bgr, const ValidationParams& params, Segment& out) {
+                      const cv::Mat& bgr, const ValidationParams& params, Segment& out, SegmentFilter keep) {
   const int w = maps.width, h = maps.height;
   const auto& e = seg.endpoints();
   out.x0 = e[0];
@@ -72,25 +72,30 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
 #endif
   int window_count = 0, inliers = 0, outliers = 0;
 
-  for (int i = seg.first_index(); i <= seg.last_index(); ++i) {
-    const Pixel px = chain[i];
-    if (i + 8 <= seg.last_index()) {
-      // The pixels are known ahead: have their gradient and colour rows in flight.
-      const Pixel ahead = chain[i + 8];
-      const int a = ahead.y * w + ahead.x, below = std::min(ahead.y + 1, h - 1) * w + ahead.x;
-      __builtin_prefetch(maps.dx.data() + a);
-      __builtin_prefetch(maps.dy.data() + a);
-      __builtin_prefetch(maps.dx.data() + below);
-      __builtin_prefetch(maps.dy.data() + below);
-      __builtin_prefetch(bgr.ptr<std::uint8_t>(std::max(ahead.y - 1, 0)) + 3 * ahead.x);
-      __builtin_prefetch(bgr.ptr<std::uint8_t>(ahead.y) + 3 * ahead.x);
-      __builtin_prefetch(bgr.ptr<std::uint8_t>(std::min(ahead.y + 1, h - 1)) + 3 * ahead.x);
+  // Visits the segment's inlier pixels, ends trimmed: those both tests count.
+  const auto for_each_pixel = [&](auto&& visit) {
+    for (int i = seg.first_index(); i <= seg.last_index(); ++i) {
+      const Pixel px = chain[i];
+      if (i + 8 <= seg.last_index()) {
+        // The pixels are known ahead: have their gradient and colour rows in flight.
+        const Pixel ahead = chain[i + 8];
+        const int a = ahead.y * w + ahead.x, below = std::min(ahead.y + 1, h - 1) * w + ahead.x;
+        __builtin_prefetch(maps.dx.data() + a);
+        __builtin_prefetch(maps.dy.data() + a);
+        __builtin_prefetch(maps.dx.data() + below);
+        __builtin_prefetch(maps.dy.data() + below);
+        __builtin_prefetch(bgr.ptr<std::uint8_t>(std::max(ahead.y - 1, 0)) + 3 * ahead.x);
+        __builtin_prefetch(bgr.ptr<std::uint8_t>(ahead.y) + 3 * ahead.x);
+        __builtin_prefetch(bgr.ptr<std::uint8_t>(std::min(ahead.y + 1, h - 1)) + 3 * ahead.x);
+      }
+      if (mark_of(maps.state[px.y * w + px.x]) != Mark::Inlier) continue;  // junction and dropped pixels do not count
+      const int to_end = seg.horizontal() ? std::min(std::abs(px.x - last.x), std::abs(px.x - first.x))
+                                          : std::min(std::abs(px.y - last.y), std::abs(px.y - first.y));
+      if (to_end < trim) continue;
+      visit(px);
     }
-    if (mark_of(maps.state[px.y * w + px.x]) != Mark::Inlier) continue;  // junction and dropped pixels do not count
-    const int to_end = seg.horizontal() ? std::min(std::abs(px.x - last.x), std::abs(px.x - first.x))
-                                        : std::min(std::abs(px.y - last.y), std::abs(px.y - first.y));
-    if (to_end < trim) continue;
-
+  };
+  const auto test_angle = [&](Pixel px) {
     // The gradient orientation on the line itself (bilinear), not at the discrete pixel.
     const float dist = la * px.x + lb * px.y + lc;
     const float qx = px.x - la * dist, qy = px.y - lb * dist;
@@ -110,8 +115,9 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
       outlier = orientation_distance(normal, angle) > params.max_angle_error;
     }
     outlier ? ++outliers : ++inliers;
-
-    if (px.x < 1 || px.x >= w - 1 || px.y < 1 || px.y >= h - 1) continue;
+  };
+  const auto add_window = [&](Pixel px) {
+    if (px.x < 1 || px.x >= w - 1 || px.y < 1 || px.y >= h - 1) return;
     for (int r = 0; r < 3; ++r) {
       const std::uint8_t* row = bgr.ptr<std::uint8_t>(px.y - 1 + r) + 3 * (px.x - 1);
       if (int_sums) {
@@ -131,29 +137,46 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
       }
     }
     ++window_count;
-  }
-  if (int_sums) {
-#if CV_SIMD128
-    for (int r = 0; r < 3; ++r) {
-      cv::v_store(&int_window[r * 9], sum_lo[r]);
-      cv::v_store(&int_window[r * 9 + 4], sum_hi[r]);
-    }
-#endif
-    for (int k = 0; k < 27; ++k) window[k] = static_cast<float>(int_window[k]);
-  }
-
+  };
   // Sobel of the mean window / 4, in R,G,B order; y is the image-down derivative.
-  out.grad_x = {0, 0, 0};
-  out.grad_y = {0, 0, 0};
-  if (window_count > 0) {
-    const float inv = 1.f / static_cast<float>(window_count);
-    const auto at = [&](int r, int col, int ch) { return window[r * 9 + col * 3 + ch] * inv; };
-    for (int ch = 0; ch < 3; ++ch) {
-      const float gx = (at(0, 2, ch) - at(0, 0, ch)) + 2 * (at(1, 2, ch) - at(1, 0, ch)) + (at(2, 2, ch) - at(2, 0, ch));
-      const float gy = (at(2, 0, ch) - at(0, 0, ch)) + 2 * (at(2, 1, ch) - at(0, 1, ch)) + (at(2, 2, ch) - at(0, 2, ch));
-      out.grad_x[2 - ch] = gx / 4;
-      out.grad_y[2 - ch] = gy / 4;
+  const auto set_gradients = [&] {
+    if (int_sums) {
+#if CV_SIMD128
+      for (int r = 0; r < 3; ++r) {
+        cv::v_store(&int_window[r * 9], sum_lo[r]);
+        cv::v_store(&int_window[r * 9 + 4], sum_hi[r]);
+      }
+#endif
+      for (int k = 0; k < 27; ++k) window[k] = static_cast<float>(int_window[k]);
     }
+    out.grad_x = {0, 0, 0};
+    out.grad_y = {0, 0, 0};
+    if (window_count > 0) {
+      const float inv = 1.f / static_cast<float>(window_count);
+      const auto at = [&](int r, int col, int ch) { return window[r * 9 + col * 3 + ch] * inv; };
+      for (int ch = 0; ch < 3; ++ch) {
+        const float gx = (at(0, 2, ch) - at(0, 0, ch)) + 2 * (at(1, 2, ch) - at(1, 0, ch)) + (at(2, 2, ch) - at(2, 0, ch));
+        const float gy = (at(2, 0, ch) - at(0, 0, ch)) + 2 * (at(2, 1, ch) - at(0, 1, ch)) + (at(2, 2, ch) - at(0, 2, ch));
+        out.grad_x[2 - ch] = gx / 4;
+        out.grad_y[2 - ch] = gy / 4;
+      }
+    }
+  };
+
+  if (keep.test == nullptr) {
+    // One visit for both tests.
+    for_each_pixel([&](Pixel px) {
+      test_angle(px);
+      add_window(px);
+    });
+    set_gradients();
+  } else {
+    // The colours first: a segment they rule out skips the angle test.
+    for_each_pixel(add_window);
+    set_gradients();
+    out.saliency = 0;
+    if (!keep.test(keep.context, out)) return false;
+    for_each_pixel(test_angle);
   }
   if (!params.validate) {
     out.saliency = std::hypot(sdx, sdy);

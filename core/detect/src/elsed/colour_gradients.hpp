@@ -18,12 +18,20 @@ struct ValidationParams {
   bool validate = false;       // false: keep every segment, saliency = Euclidean length
 };
 
+// A caller's test of a segment's endpoints and colour gradients (saliency 0): false drops it.
+struct SegmentFilter {
+  bool (*test)(const void* context, const Segment& segment) = nullptr;  // null: keep every one
+  const void* context = nullptr;
+};
+
 // Checks a drawn segment: it is kept when more of its inlier pixels (ends trimmed) have a
 // gradient orientation within the threshold of its normal than not. While visiting them, the
 // 3x3 BGR windows around those pixels are summed; the mean window is Sobel-filtered once.
 // Fills `out` (endpoints, saliency, gradients; label untouched) and returns whether it is valid.
+// With a `keep` test, the windows are summed first and a segment it drops is not validated
+// (false); the segments it keeps come out as without it.
 bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, const GradientMaps& maps,
-                      const cv::Mat& bgr, const ValidationParams& params, Segment& out);
+                      const cv::Mat& bgr, const ValidationParams& params, Segment& out, SegmentFilter keep = {});
 
 }  // namespace fieldlines::elsed
 

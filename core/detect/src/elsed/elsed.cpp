@@ -1,6 +1,9 @@
 #include "elsed.hpp"
 
+#include <algorithm>
+
 #include "colour_gradients.hpp"
+#include "features/field_pixel.hpp"
 
 namespace fieldlines {
 
@@ -10,20 +13,19 @@ using elsed::dir_of;
 using elsed::mark_of;
 using elsed::Pixel;
 
-void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& params) {
+void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold) {
   const auto threads = static_cast<std::size_t>(params.threads);
   if (passes_.size() != threads || params.gaussian_kernel != pass_kernel_ || params.gaussian_sigma != pass_sigma_) {
     passes_.resize(threads);
-    for (elsed::GradientPass& p : passes_)
-      p.configure(params.gaussian_kernel, params.gaussian_sigma, params.gradient_threshold);
+    for (elsed::GradientPass& p : passes_) p.configure(params.gaussian_kernel, params.gaussian_sigma, gradient_threshold);
     pass_kernel_ = params.gaussian_kernel;
     pass_sigma_ = params.gaussian_sigma;
-    pass_threshold_ = params.gradient_threshold;
+    pass_threshold_ = gradient_threshold;
     if (threads == 1) workers_.resize(0);
   }
-  if (params.gradient_threshold != pass_threshold_) {  // a dark field's frame (light.hpp)
-    for (elsed::GradientPass& p : passes_) p.set_threshold(params.gradient_threshold);
-    pass_threshold_ = params.gradient_threshold;
+  if (gradient_threshold != pass_threshold_) {  // a dark field's frame (light.hpp)
+    for (elsed::GradientPass& p : passes_) p.set_threshold(gradient_threshold);
+    pass_threshold_ = gradient_threshold;
   }
   const int h = bgr.rows, bands = passes_.front().band_count(h, params.threads);
   if (bands == 1) {
@@ -50,33 +52,51 @@ void ElsedEngine::find_anchors(int scan_interval, int threshold, const cv::Mat& 
       if (px < 0 || py < 0 || px >= w || py >= h) continue;
       const std::uint8_t* p = bgr.ptr<std::uint8_t>(py) + 3 * px;
       const int sum = p[0] + p[1] + p[2];
-      if (sum < limits.min_bright_sum) continue;
-      // Near grey: |R - sum/3| + |G - sum/3| within max_chroma of the sum (times 3: integers).
-      if (std::abs(3 * p[2] - sum) + std::abs(3 * p[1] - sum) <= limits.max_chroma * 3 * sum) return true;
+      if (sum >= limits.min_bright_sum && near_grey(p, sum, limits.max_chroma)) return true;
     }
     return false;
   };
-  anchors_.clear();
-  // Column by column, as the method scans: the order decides which anchor draws an edge first.
-  for (int x = 1; x < w - 1; x += scan_interval) {
+  // The method scans column by column, and that order decides which anchor draws an edge first.
+  // Columns of a frame stride across cache lines: the grid is read row by row instead (each
+  // row's cache lines shared by its columns and by bright_beside's windows), and the anchors are
+  // then put in column order (within a column they arrive top-down, as the method finds them).
+  const int columns = w > 2 ? (w - 3) / scan_interval + 1 : 0;  // grid columns 1 + k * scan_interval < w - 1
+  column_first_.resize(static_cast<std::size_t>(columns));
+  column_start_.assign(static_cast<std::size_t>(columns) + 1, 0);
+  int top = h;
+  for (int k = 0; k < columns; ++k) {
     // The first grid row (1 + k * scan_interval) at or below the column's first row.
-    const int first = limited ? limits.first_rows[static_cast<std::size_t>(x)] : 1;
+    const int first = limited ? limits.first_rows[static_cast<std::size_t>(1 + k * scan_interval)] : 1;
     const int y0 = first <= 1 ? 1 : 1 + (first - 1 + scan_interval - 1) / scan_interval * scan_interval;
-    for (int y = y0; y < h - 1; y += scan_interval) {
-      const int i = y * w + x;
+    column_first_[static_cast<std::size_t>(k)] = y0;
+    top = std::min(top, y0);
+  }
+  row_anchors_.clear();
+  for (int y = top; y < h - 1; y += scan_interval) {
+    for (int k = 0; k < columns; ++k) {
+      if (y < column_first_[static_cast<std::size_t>(k)]) continue;
+      const int x = 1 + k * scan_interval, i = y * w + x;
       if (g[i] == 0) continue;
       // A local maximum across the edge by at least `threshold`.
       const bool across_rows = dir_of(maps_.state[i]) == EdgeDir::Horizontal;
       const int step = across_rows ? w : 1;
       if (g[i] >= g[i - step] + threshold && g[i] >= g[i + step] + threshold &&
-          (limits.min_bright_sum <= 0 || bright_beside(x, y, across_rows)))
-        anchors_.push_back({x, y});
+          (limits.min_bright_sum <= 0 || bright_beside(x, y, across_rows))) {
+        row_anchors_.push_back({x, y});
+        ++column_start_[static_cast<std::size_t>(k) + 1];
+      }
     }
   }
+  for (int k = 0; k < columns; ++k)
+    column_start_[static_cast<std::size_t>(k) + 1] += column_start_[static_cast<std::size_t>(k)];
+  anchors_.resize(row_anchors_.size());
+  for (const Pixel& a : row_anchors_)
+    anchors_[static_cast<std::size_t>(column_start_[static_cast<std::size_t>((a.x - 1) / scan_interval)]++)] = a;
 }
 
-void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, std::vector<Segment>& out) {
-  compute_gradients(bgr, params);
+void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold,
+                      std::vector<Segment>& out) {
+  compute_gradients(bgr, params, gradient_threshold);
 
   // With no anchor at all, retry with a halved threshold (down to zero) like the method.
   int anchor_threshold = params.anchor_threshold;
@@ -86,11 +106,11 @@ void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, std::vec
     anchor_threshold /= 2;
   }
 
-  draw_and_validate(bgr, params, params.min_line_length, out);
+  draw_and_validate(bgr, params, params.min_line_length, {}, out);
 }
 
 void ElsedEngine::draw_and_validate(const cv::Mat& bgr, const DetectorParams& params, int min_line_length,
-                                    std::vector<Segment>& out) {
+                                    elsed::SegmentFilter keep, std::vector<Segment>& out) {
   elsed::DrawerParams& dp = drawer_params_;
   dp.line_fit_error = params.line_fit_error;
   dp.px_to_segment_dist = params.px_to_segment_dist;
@@ -107,19 +127,19 @@ void ElsedEngine::draw_and_validate(const cv::Mat& bgr, const DetectorParams& pa
   const elsed::ValidationParams vp{params.validation_threshold, params.validate};
   Segment s;
   for (const elsed::LineModel& seg : drawer_.segments()) {
-    if (elsed::validate_segment(seg, drawer_.chain(), maps_, bgr, vp, s)) out.push_back(s);
+    if (elsed::validate_segment(seg, drawer_.chain(), maps_, bgr, vp, s, keep)) out.push_back(s);
   }
 }
 
 void ElsedEngine::redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,
-                         const AnchorLimits& limits, std::vector<Segment>& out) {
+                         const AnchorLimits& limits, elsed::SegmentFilter keep, std::vector<Segment>& out) {
   out.clear();
   if (maps_.width != bgr.cols || maps_.height != bgr.rows) return;  // run() has not seen this frame
   // The first drawing's marks would stop the new one at every pixel it owns: back to Free,
   // keeping each pixel's edge direction.
   for (elsed::PixelState& st : maps_.state) st = elsed::with_mark(st, Mark::Free);
   find_anchors(scan_interval, params.anchor_threshold, bgr, limits);
-  draw_and_validate(bgr, params, min_line_length, out);
+  draw_and_validate(bgr, params, min_line_length, keep, out);
 }
 
 }  // namespace fieldlines

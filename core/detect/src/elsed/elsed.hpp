@@ -7,6 +7,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "band_workers.hpp"
+#include "colour_gradients.hpp"
 #include "edge_drawer.hpp"
 #include "elsed_types.hpp"
 #include "gradient_pass.hpp"
@@ -19,9 +20,11 @@ namespace fieldlines {
 class ElsedEngine {
  public:
   // bgr: 8-bit, 3 channels, at least 3x3. Appends unclassified segments to `out`.
-  void run(const cv::Mat& bgr, const DetectorParams& params, std::vector<Segment>& out);
+  // `gradient_threshold` stands for params.gradient_threshold: the frame's own (a dark field's
+  // is lower, light.hpp), so that a caller need not copy the parameters per frame.
+  void run(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold, std::vector<Segment>& out);
   // The first stage alone (what run() starts with): fills gradients().
-  void compute_gradients(const cv::Mat& bgr, const DetectorParams& params);
+  void compute_gradients(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold);
   const elsed::GradientMaps& gradients() const { return maps_; }
   // After run() on the same frame: draws it again from anchors every `scan_interval` px, keeping
   // segments from `min_line_length` px (the short pieces of curves), into `out` (cleared first).
@@ -30,14 +33,15 @@ class ElsedEngine {
   struct AnchorLimits {
     std::span<const int> first_rows;  // one per column: anchors from that row down; empty: all
     int min_bright_sum = 0;           // a pixel this bright (B + G + R) within 5 px across...
-    float max_chroma = 2;             // ...and this grey (|r - 1/3| + |g - 1/3|, r = R / sum); 2: any
+    float max_chroma = 2;             // ...and this grey (near_grey, field_pixel.hpp); 2: any
   };
+  // `keep` drops segments by their colours before their validation (colour_gradients.hpp).
   void redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,
-              const AnchorLimits& limits, std::vector<Segment>& out);
+              const AnchorLimits& limits, elsed::SegmentFilter keep, std::vector<Segment>& out);
 
  private:
   void draw_and_validate(const cv::Mat& bgr, const DetectorParams& params, int min_line_length,
-                         std::vector<Segment>& out);
+                         elsed::SegmentFilter keep, std::vector<Segment>& out);
   void find_anchors(int scan_interval, int threshold, const cv::Mat& bgr, const AnchorLimits& limits);
 
   // One pass per thread (each its own scratch rows), all configured alike; passes_[0] runs on
@@ -48,7 +52,10 @@ class ElsedEngine {
   double pass_sigma_ = -1;
   elsed::DrawerParams drawer_params_;  // a member so its junction_sizes keeps its capacity
   elsed::GradientMaps maps_;
-  std::vector<elsed::Pixel> anchors_;
+  std::vector<elsed::Pixel> anchors_;      // in the method's order: column by column, top-down
+  std::vector<elsed::Pixel> row_anchors_;  // find_anchors' scratch: the same, row by row
+  std::vector<int> column_first_;          // find_anchors' scratch: each grid column's first row
+  std::vector<int> column_start_;          // ...and where its anchors start in anchors_
   elsed::EdgeDrawer drawer_;
 };
 

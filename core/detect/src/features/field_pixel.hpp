@@ -16,6 +16,14 @@ namespace fieldlines {
 // second drawing's anchors need a pixel that bright beside them (detector.cpp).
 constexpr float kPaintContrast = 1.1f;
 
+// Whether the 8-bit B, G, R pixel `bgr`, whose B + G + R is `sum`, is nearly grey: its
+// chromaticities r = R / sum and g = G / sum satisfy |r - 1/3| + |g - 1/3| <= max_chroma. Tested
+// times 3 sum (|3 R - sum| + |3 G - sum| <= 3 max_chroma sum): exact, and no division. Paint's
+// colour test, for the field boundary and the second drawing's anchors alike.
+inline bool near_grey(const std::uint8_t* bgr, int sum, float max_chroma) {
+  return std::abs(3 * bgr[2] - sum) + std::abs(3 * bgr[1] - sum) <= 3.0 * max_chroma * sum;
+}
+
 class FieldPixel {
  public:
   FieldPixel(const Rgb& field, const FieldBoundaryParams& params)
@@ -25,14 +33,14 @@ class FieldPixel {
 
   // `bgr` points at one 8-bit B, G, R pixel.
   bool field(const std::uint8_t* bgr) const {
-    const float sum = float(bgr[0]) + bgr[1] + bgr[2];
+    // The same value as the float sum of the three (exact either way): one conversion, not three.
+    const float sum = float(bgr[0] + bgr[1] + bgr[2]);
     if (sum < p_.min_brightness * sum_ || sum > p_.max_brightness * sum_) return false;
     return std::abs(bgr[2] / sum - r_) + std::abs(bgr[1] / sum - g_) <= p_.chroma_tolerance;
   }
   bool paint(const std::uint8_t* bgr) const {
-    const float sum = float(bgr[0]) + bgr[1] + bgr[2];
-    return sum >= p_.paint_brightness * sum_ &&
-           std::abs(bgr[2] / sum - 1.f / 3) + std::abs(bgr[1] / sum - 1.f / 3) <= p_.paint_chroma;
+    const int sum = bgr[0] + bgr[1] + bgr[2];
+    return float(sum) >= p_.paint_brightness * sum_ && near_grey(bgr, sum, p_.paint_chroma);
   }
 
  private:

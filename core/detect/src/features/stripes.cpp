@@ -29,7 +29,7 @@ struct Profile {
   float width = 0, offset = 0;
 };
 
-float brightness(const std::uint8_t* p) { return float(p[0]) + p[1] + p[2]; }
+float brightness(const std::uint8_t* p) { return float(p[0] + p[1] + p[2]); }  // exact: one conversion
 
 // Whether two pixels show the same turf: chromaticity within the field pixel rule's tolerance,
 // brightness within a fifth.
