@@ -95,6 +95,24 @@ TEST(Intersections, AnL) {
   expect_junction(junctions(noisy(clean, 5)), corner, JunctionType::L, {along, up}, 10);
 }
 
+// Pale paint whose edges lie between the class's colour cut and the grey angle (a grey-green
+// carpet, white balance off): the pieces are stripes, so they still make the junction.
+TEST(Intersections, PalePaintBeyondTheColourCutStillMeets) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  const cv::Point2f corner(120, 380), along(600, 350), up(180, 60);
+  cv::line(clean, corner, along, kPaint, 10);
+  cv::line(clean, corner, up, kPaint, 10);
+  Thresholds tight;
+  const double paint_angle = 21.2;  // kPaint on kTurf, to the white-on-green transition
+  tight.marking.thresholds.max_angle_deg = 15;
+  ASSERT_LT(tight.marking.thresholds.max_angle_deg, paint_angle);
+  ASSERT_GT(achromatic_angle_deg(tight.marking), paint_angle);
+  LineDetector detector(intersections_on(), tight);
+  std::vector<Segment> segments;
+  detector.detect(noisy(clean, 5), segments);
+  expect_junction(detector.features().intersections, corner, JunctionType::L, {along, up}, 10);
+}
+
 TEST(Intersections, ParallelAndDistantLinesMeetNowhere) {
   cv::Mat clean(480, 640, CV_8UC3, kTurf);
   cv::line(clean, cv::Point(60, 100), cv::Point(590, 120), kPaint, 8);

@@ -58,6 +58,14 @@ bool passes(const ClassFeatures& f, float length, const ClassThresholds& t) {
   return f.projection >= t.min_projection && f.angle_deg <= t.max_angle_deg && length >= t.min_length;
 }
 
+double achromatic_angle_deg(const ColourClass& c) {
+  const double v[3] = {double(c.to[0]) - c.from[0], double(c.to[1]) - c.from[1], double(c.to[2]) - c.from[2]};
+  const double nv = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  double cosine = (v[0] + v[1] + v[2]) / (nv * std::sqrt(3.0));
+  if (c.two_sided) cosine = std::abs(cosine);
+  return std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+}
+
 Label classify(const SegmentFeatures& f, const Thresholds& t) {
   if (passes(f.boundary, f.length, t.boundary.thresholds)) return Label::Boundary;
   for (int i = 0; i < f.marking_count; ++i)

@@ -27,15 +27,6 @@ constexpr const char* kNoBoundary = "no dark field edge seen (a field without a 
 
 double norm3(const Rgb& g) { return std::sqrt(double(g[0]) * g[0] + double(g[1]) * g[1] + double(g[2]) * g[2]); }
 
-// The angle an achromatic (1,1,1) gradient makes with the class's transition.
-double achromatic_angle_deg(const ColourClass& c) {
-  const double v[3] = {double(c.to[0]) - c.from[0], double(c.to[1]) - c.from[1], double(c.to[2]) - c.from[2]};
-  const double nv = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  double cosine = (v[0] + v[1] + v[2]) / (nv * std::sqrt(3.0));
-  if (c.two_sided) cosine = std::abs(cosine);
-  return std::acos(std::clamp(cosine, -1.0, 1.0)) * kDeg;
-}
-
 // The gradient across the segment: along its normal, so the part along the line (noise) is gone.
 double normal_gradient_norm(const Segment& s) {
   const double dx = double(s.x1) - s.x0, dy = double(s.y1) - s.y0;

@@ -72,6 +72,9 @@ struct SegmentFeatures {
 
 SegmentFeatures compute_features(const Segment& segment, const Thresholds& thresholds);
 bool passes(const ClassFeatures& f, float length, const ClassThresholds& t);
+// The angle an achromatic (1,1,1) gradient makes with the class's transition, degrees: where
+// every grey edge (wall, robot, shadow) lies, 35.26 for green-to-white.
+double achromatic_angle_deg(const ColourClass& c);
 Label classify(const SegmentFeatures& features, const Thresholds& thresholds);
 Label classify(const Segment& segment, const Thresholds& thresholds);
 // Relabels every segment in place.
