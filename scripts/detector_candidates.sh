@@ -2,7 +2,8 @@
 # Which detector parameters `fieldlines calibrate` should choose: per candidate (smoothing kernel,
 # scan interval, minimum length, gradient threshold), each venue is calibrated with that detector
 # kept (--keep-detector) on its frames without hand-drawn truth, then scored on the frames with
-# one, with the stripes stage on and off, beside the candidate's recall ceiling (every segment
+# one, with the stripes stage off and on (each calibrated so: with it on, the markings are fitted
+# on the stripes, as the command does), beside the candidate's recall ceiling (every segment
 # called a marking). Prints Markdown: marking P / R.
 #   usage: bash scripts/detector_candidates.sh [OUT_DIR] [KERNEL,SCAN,MIN_LENGTH,THRESHOLD ...]
 #          (default build/detector-candidates; the method's, ELSED's and the chosen ones)
@@ -45,13 +46,17 @@ for c in "${candidates[@]}"; do
   for v in "${venues[@]}"; do
     IFS='|' read -r id pattern title <<<"$v"
     [[ -d "$out/$id" ]] || continue
-    fit="$out/$id-$kernel-$scan-$length-$threshold.json"
-    if ! "$bin" calibrate "$out/$id" -o "$fit" --thresholds "$start" --keep-detector --quiet 2>/dev/null; then
-      echo "| $c | $title | refused | | |"; continue
-    fi
-    with "$fit" "$out/off.json" stripes=false
-    with "$fit" "$out/on.json" stripes=true
+    cells=()
+    for stripes in false true; do
+      with "$start" "$out/start-stripes.json" stripes=$stripes
+      fit="$out/$id-$kernel-$scan-$length-$threshold-$stripes.json"
+      if "$bin" calibrate "$out/$id" -o "$fit" --thresholds "$out/start-stripes.json" --keep-detector --quiet 2>/dev/null; then
+        cells+=("$(score "$id" "$fit" | tr '|' '/')")
+      else
+        cells+=("refused")
+      fi
+    done
     ceiling=$(score "$id" "$out/everything.json" | cut -d'|' -f2 | tr -d ' ')
-    echo "| $c | $title | $(score "$id" "$out/off.json" | tr '|' '/') | $(score "$id" "$out/on.json" | tr '|' '/') | $ceiling |"
+    echo "| $c | $title | ${cells[0]} | ${cells[1]} | $ceiling |"
   done
 done
