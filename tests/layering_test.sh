@@ -6,7 +6,8 @@
 #   python (the module) -> detect, data, train;
 # no window-system include (ImGui, GLFW, OpenGL) in core/ or gui/model/, no GLFW or OpenGL in
 # gui/panels/, and no source file in gui/'s root; every quoted include
-# is either a file beside the includer or qualified from the project root or fieldlines/<lib>/.
+# is either a file beside the includer, one from its library's source root (core/<lib>/src), or
+# qualified from the project root or fieldlines/<lib>/.
 # Usage: layering_test.sh SOURCE_DIR. Prints every violation; exits 1 if there is one.
 set -uo pipefail
 cd "$1"
@@ -73,8 +74,10 @@ while IFS= read -r file; do
     elif [[ "$text" =~ \#include[[:space:]]*\"([^\"]*)\" ]]; then
       name="${BASH_REMATCH[1]}"
       [[ "$name" == *..* ]] && { fail "$where: include climbs out of its folder: $name"; continue; }
-      # A file beside the includer (or below it) belongs to the includer's layer.
+      # A file beside the includer (or below it) belongs to the includer's layer, and so does
+      # one named from its library's source root (core/<lib>/src, on that library's include path).
       [[ -f "$dir/$name" ]] && continue
+      [[ "$file" =~ ^(core/[a-z]+)/src/ && -f "${BASH_REMATCH[1]}/src/$name" ]] && continue
     else
       continue
     fi

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "gui/model/shortcuts.hpp"
-#include "test_paths.hpp"
+#include "tests/test_paths.hpp"
 
 namespace fs = fieldlines::studio;
 using fs::Action;
