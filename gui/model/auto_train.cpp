@@ -9,7 +9,7 @@ void AutoTrainJob::start(AutoTrainInput input) {
   job_.start([input = std::move(input)](std::stop_token stop, const auto&) {
     const auto t0 = std::chrono::steady_clock::now();
     AutoTrainResult r;
-    // Label-free: shared with leave-one-out.
+    // Label-free: one fit shared with leave-one-out.
     const Calibration fit = calibrate_gated(input.all, input.start, input.gates);
     r.made = proposal_thresholds(fit, input.train, input.start, input.params, stop,
                                  {input.train_gates.may_mark, input.train_gates.may_bound});

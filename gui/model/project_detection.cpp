@@ -45,7 +45,8 @@ const std::vector<std::size_t>& ProjectDetection::poll(Project& project) {
     for (Segment& s : r.segments) s.label = Label::Unlabelled;
     gates_.resize(project.images.size());
     // The stripes check gates proposals only where the project's detector runs it.
-    const std::span<const StripeVerdict> stripes = project.detector.stripes ? std::span(r.stripes) : std::span<const StripeVerdict>{};
+    const std::span<const StripeVerdict> stripes =
+        project.detector.stripes ? std::span<const StripeVerdict>(r.stripes) : std::span<const StripeVerdict>{};
     gates_[r.image] = ProposalGate::of(r.segments, features_[r.image].field_boundary, stripes);
     const ReattachStats stats = project.replace_segments(r.image, std::move(r.segments));
     ++report_.detected;

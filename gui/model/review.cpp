@@ -6,7 +6,6 @@
 #include <limits>
 #include <utility>
 
-#include "fieldlines/train/calibrate.hpp"
 #include "fieldlines/train/protocols.hpp"
 #include "fieldlines/train/review.hpp"
 #include "gui/model/studio_controller.hpp"
@@ -40,8 +39,9 @@ std::string StudioController::propose() {
   const LabelledSet labelled = project_.labelled();
   const Thresholds start = proposal_start();
   const ProposalGate gates = all_gates(), labelled_gates = this->labelled_gates();
-  const ProposalThresholds made = proposal_thresholds(calibrate_gated(all_segments(), start, gates),
-                                                      labelled.segments, start, proposal_params(), {}, {labelled_gates.may_mark, labelled_gates.may_bound});
+  const Calibration fit = calibrate_gated(all_segments(), start, gates);
+  const ProposalThresholds made = proposal_thresholds(fit, labelled.segments, start, proposal_params(), {},
+                                                      {labelled_gates.may_mark, labelled_gates.may_bound});
   follow_proposals(made);
   const std::size_t proposed = refresh_proposals(made.thresholds);
   proposal_summary_ = std::to_string(proposed) + " proposals (marking " + std::string(to_string(made.marking)) +
