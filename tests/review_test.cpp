@@ -2,6 +2,11 @@
 // decision margin that orders segments uncertain-first.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <vector>
+
 #include "fieldlines/detect/classifier.hpp"
 #include "fieldlines/train/calibrate.hpp"
 #include "fieldlines/train/review.hpp"
@@ -74,6 +79,44 @@ TEST(Review, AClassSwitchedOffStaysOff) {
   EXPECT_TRUE(made.boundary_refused.empty());
   EXPECT_NE(made.marking, fl::ProposalSource::Disabled);
   EXPECT_EQ(fl::to_string(fl::ProposalSource::Disabled), "disabled");
+}
+
+TEST(Review, EachClassIsTrainedOnItsCandidatesAlone) {
+  const fl::test::KnownField k = fl::test::known_field(4);
+  const std::vector<fl::Segment> all = unlabelled(k.segments);
+  // 30 markings and 30 non-features labelled, then 30 more nones with the markings' very colours:
+  // what the stripes check refuses (a white wall's foot), labelled none after a proposal.
+  std::vector<fl::Segment> labelled(k.segments.begin(), k.segments.begin() + 30);
+  labelled.insert(labelled.end(), k.segments.end() - 30, k.segments.end());
+  const std::size_t kept = labelled.size();
+  for (std::size_t i = 0; i < 30; ++i) {
+    fl::Segment copy = k.segments[i];
+    copy.label = fl::Label::None;
+    labelled.push_back(copy);
+  }
+  std::vector<std::uint8_t> may(labelled.size(), 1);
+  std::fill(may.begin() + static_cast<std::ptrdiff_t>(kept), may.end(), 0);
+  const fl::Calibration fit = fl::calibrate(all);
+  const fl::ProposalThresholds gated =
+      fl::proposal_thresholds(fit, labelled, fl::Thresholds{}, {}, {}, fl::LabelledCandidates{may, may});
+  const fl::ProposalThresholds without_copies =
+      fl::proposal_thresholds(fit, std::span(labelled).first(kept), fl::Thresholds{});
+  const fl::ProposalThresholds ungated = fl::proposal_thresholds(fit, labelled, fl::Thresholds{});
+  EXPECT_EQ(gated.marking, fl::ProposalSource::Trained);
+  // The refused copies say nothing about the box: as though they were not labelled at all.
+  EXPECT_EQ(gated.thresholds, without_copies.thresholds);
+  // Counted as nones they pull the box off the markings.
+  int gated_right = 0, ungated_right = 0;
+  for (std::size_t i = 0; i < 30; ++i) {
+    gated_right += fl::classify(k.segments[i], gated.thresholds) == fl::Label::Marking;
+    ungated_right += fl::classify(k.segments[i], ungated.thresholds) == fl::Label::Marking;
+  }
+  EXPECT_GE(gated_right, 28);
+  EXPECT_LT(ungated_right, gated_right);
+  // A mismatched length is no candidates at all.
+  const std::vector<std::uint8_t> short_list(3, 0);
+  EXPECT_EQ(fl::proposal_thresholds(fit, labelled, fl::Thresholds{}, {}, {}, {short_list, short_list}).thresholds,
+            ungated.thresholds);
 }
 
 TEST(Review, TheMarginIsZeroOnABoundaryAndGrowsAwayFromIt) {

@@ -9,8 +9,10 @@ void AutoTrainJob::start(AutoTrainInput input) {
   job_.start([input = std::move(input)](std::stop_token stop, const auto&) {
     const auto t0 = std::chrono::steady_clock::now();
     AutoTrainResult r;
-    const Calibration fit = calibrate(input.all, input.start);  // label-free: shared with leave-one-out
-    r.made = proposal_thresholds(fit, input.train, input.start, input.params, stop);
+    // Label-free: one fit shared with leave-one-out.
+    const Calibration fit = calibrate_gated(input.all, input.start, input.gates);
+    r.made = proposal_thresholds(fit, input.train, input.start, input.params, stop,
+                                 {input.train_gates.may_mark, input.train_gates.may_bound});
     r.train_counts = count_labelled(input.train, r.made.thresholds);
     r.test_counts = count_labelled(input.test, r.made.thresholds);
     r.train_segments = input.train.size();

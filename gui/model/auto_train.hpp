@@ -12,13 +12,16 @@
 #include "fieldlines/train/review.hpp"
 #include "gui/model/job.hpp"
 #include "gui/model/leave_one_out.hpp"
+#include "gui/model/proposal_gate.hpp"
 
 namespace fieldlines::studio {
 
 // One retraining's inputs, copied so the worker shares nothing with the UI thread.
 struct AutoTrainInput {
   std::vector<Segment> all;          // every segment of the project, for label-free calibration
+  ProposalGate gates;                // of `all`: calibration fits each class on its candidates
   std::vector<Segment> train, test;  // the labelled segments of each split
+  ProposalGate train_gates;          // of `train`: each class is trained on its candidates
   Thresholds start;
   ProposalParams params;
   // With too few test images: every label with its image, for leave-one-image-out figures.

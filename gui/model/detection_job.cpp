@@ -2,17 +2,46 @@
 
 #include <chrono>
 #include <exception>
+#include <optional>
+#include <span>
+#include <vector>
 
 #include "fieldlines/data/image_io.hpp"
+#include "fieldlines/detect/stripes.hpp"
 
 namespace fieldlines::studio {
+namespace {
+
+// The stripes check on every segment, not only on those the detector's thresholds call markings.
+struct StripeCheck {
+  std::vector<Segment> checked;
+  StripeWorkspace work;
+  std::vector<Marking> stripes;
+
+  std::vector<StripeVerdict> verdicts(const cv::Mat& image, const std::optional<Rgb>& field,
+                                      std::span<const Segment> segments, const DetectorParams& params) {
+    if (!field || image.type() != CV_8UC3) return std::vector<StripeVerdict>(segments.size(), StripeVerdict::Unchecked);
+    checked.assign(segments.begin(), segments.end());
+    for (Segment& s : checked) s.label = Label::Marking;
+    find_stripes(image, field, checked, params, work, stripes);
+    std::vector<StripeVerdict> out;
+    out.reserve(checked.size());
+    for (const Segment& s : checked)
+      out.push_back(s.label == Label::Marking ? StripeVerdict::Stripe : StripeVerdict::NotStripe);
+    return out;
+  }
+};
+
+}  // namespace
 
 void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, const Thresholds& thresholds) {
   total_ = items.size();
   done_ = 0;
   job_.start([items = std::move(items), params, thresholds](std::stop_token stop, const auto& report) {
-    LineDetector detector(with_every_feature(params), thresholds);  // throws on bad parameters: the job's error
+    const DetectorParams every = with_every_feature(params);
+    LineDetector detector(every, thresholds);  // throws on bad parameters: the job's error
     detector.set_find_field_boundary(true);
+    StripeCheck stripes;
     std::size_t processed = 0;
     for (const Item& item : items) {
       if (stop.stop_requested()) break;
@@ -24,6 +53,7 @@ void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, 
         detector.detect(image, r.segments);
         r.detect_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         r.features = detector.features();
+        r.stripes = stripes.verdicts(image, detector.field_colour(), r.segments, every);
       } catch (const std::exception& e) {
         r.error = e.what();  // this image only; the others go on
       }

@@ -17,6 +17,7 @@
 
 #include "fieldlines/detect/detector.hpp"
 #include "gui/model/job.hpp"
+#include "gui/model/proposal_gate.hpp"
 
 namespace fieldlines::studio {
 
@@ -24,6 +25,9 @@ struct DetectionResult {
   std::size_t image = 0;          // the caller's index
   std::vector<Segment> segments;  // labels as the detector's thresholds and stripes check set them
   FieldFeatures features;         // the frame's field features, every stage on
+  // Per segment, stripe-checked as though its colours passed (stripes.hpp): the review proposes
+  // through the check (proposal_gate.hpp) with other thresholds than the detector's.
+  std::vector<StripeVerdict> stripes;
   double detect_ms = 0;           // detector time only (not file loading), feature stages included
   std::string error;              // non-empty when this image could not be loaded or detected
 };

@@ -16,6 +16,8 @@ void StudioController::start_auto_train() {
     return;
   }
   in.all = all_segments();
+  in.gates = all_gates();
+  in.train_gates = labelled_gates(false);
   in.start = proposal_start();
   in.params = proposal_params();
   if (test_images_ < kMinTestImages) in.leave_one_out = project_.labelled();

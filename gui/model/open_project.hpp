@@ -16,7 +16,8 @@ struct OpenedProject {
 };
 
 // A new project over the images directly inside `folder` (sorted, paths relative to the
-// project file's folder), nothing detected yet. Throws fieldlines::Error when there is no image.
+// project file's folder), nothing detected yet, the detector's stripes stage on (the review's
+// proposals assume it). Throws fieldlines::Error when there is no image.
 Project project_for_folder(const std::filesystem::path& folder, const std::filesystem::path& project_file);
 
 // Throws fieldlines::Error with a user-facing message for anything it cannot open.

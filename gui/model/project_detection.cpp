@@ -1,5 +1,7 @@
 #include "gui/model/project_detection.hpp"
 
+#include <span>
+
 namespace fieldlines::studio {
 
 std::string DetectionReport::summary() const {
@@ -41,6 +43,11 @@ const std::vector<std::size_t>& ProjectDetection::poll(Project& project) {
     }
     // Human labels move to the new segments that match the old ones (the rest are Unlabelled).
     for (Segment& s : r.segments) s.label = Label::Unlabelled;
+    gates_.resize(project.images.size());
+    // The stripes check gates proposals only where the project's detector runs it.
+    const std::span<const StripeVerdict> stripes =
+        project.detector.stripes ? std::span<const StripeVerdict>(r.stripes) : std::span<const StripeVerdict>{};
+    gates_[r.image] = ProposalGate::of(r.segments, features_[r.image].field_boundary, stripes);
     const ReattachStats stats = project.replace_segments(r.image, std::move(r.segments));
     ++report_.detected;
     report_.labels_kept += stats.kept;
@@ -60,6 +67,11 @@ const std::string& ProjectDetection::error(std::size_t image) const {
 const FieldFeatures& ProjectDetection::features(std::size_t image) const {
   static const FieldFeatures none;
   return image < features_.size() ? features_[image] : none;
+}
+
+const ProposalGate& ProjectDetection::gate(std::size_t image) const {
+  static const ProposalGate none;
+  return image < gates_.size() ? gates_[image] : none;
 }
 
 void ProjectDetection::set_features(std::size_t image, FieldFeatures features) {

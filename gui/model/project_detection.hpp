@@ -11,6 +11,7 @@
 
 #include "fieldlines/data/project.hpp"
 #include "gui/model/detection_job.hpp"
+#include "gui/model/proposal_gate.hpp"
 
 namespace fieldlines::studio {
 
@@ -44,6 +45,9 @@ class ProjectDetection {
   const std::string& error(std::size_t image) const;
   // The field features of the image's last detection; empty before one (or when it failed).
   const FieldFeatures& features(std::size_t image) const;
+  // What the detector lets each of the image's segments be (proposal_gate.hpp); empty before
+  // a detection here.
+  const ProposalGate& gate(std::size_t image) const;
   // Replaces them (a synthetic scene has features but no detection: bench_scene.hpp).
   void set_features(std::size_t image, FieldFeatures features);
 
@@ -52,6 +56,7 @@ class ProjectDetection {
   DetectionReport report_;
   std::vector<std::string> errors_;  // per image
   std::vector<FieldFeatures> features_;  // per image
+  std::vector<ProposalGate> gates_;      // per image
   std::vector<std::size_t> changed_;  // poll's result, reused
 };
 

@@ -21,11 +21,13 @@ ProposalParams StudioController::proposal_params() {
 
 std::size_t StudioController::refresh_proposals(const Thresholds& t) {
   std::size_t proposed = 0;
-  for (ImageEntry& e : project_.images) {
+  for (std::size_t img = 0; img < image_count(); ++img) {
+    ImageEntry& e = project_.images[img];
+    const ProposalGate& gate = detection_.gate(img);
     e.proposals.resize(e.segments.size(), Label::Unlabelled);
     for (std::size_t i = 0; i < e.segments.size(); ++i) {
       const bool open = e.segments[i].label == Label::Unlabelled;
-      e.proposals[i] = open ? classify(e.segments[i], t) : Label::Unlabelled;
+      e.proposals[i] = open ? gate.propose(i, e.segments[i], t) : Label::Unlabelled;
       proposed += open;
     }
   }
@@ -35,8 +37,11 @@ std::size_t StudioController::refresh_proposals(const Thresholds& t) {
 
 std::string StudioController::propose() {
   const LabelledSet labelled = project_.labelled();
-  const ProposalThresholds made =
-      proposal_thresholds(all_segments(), labelled.segments, proposal_start(), proposal_params());
+  const Thresholds start = proposal_start();
+  const ProposalGate gates = all_gates(), labelled_gates = this->labelled_gates();
+  const Calibration fit = calibrate_gated(all_segments(), start, gates);
+  const ProposalThresholds made = proposal_thresholds(fit, labelled.segments, start, proposal_params(), {},
+                                                      {labelled_gates.may_mark, labelled_gates.may_bound});
   follow_proposals(made);
   const std::size_t proposed = refresh_proposals(made.thresholds);
   proposal_summary_ = std::to_string(proposed) + " proposals (marking " + std::string(to_string(made.marking)) +

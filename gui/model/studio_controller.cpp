@@ -346,6 +346,36 @@ std::vector<Segment> StudioController::all_segments() const {
   return all;
 }
 
+ProposalGate StudioController::all_gates() const {
+  ProposalGate all;
+  for (std::size_t img = 0; img < image_count(); ++img) {
+    const std::size_t n = project_.images[img].segments.size();
+    if (const ProposalGate& g = detection_.gate(img); g.covers(n)) {
+      all.may_mark.insert(all.may_mark.end(), g.may_mark.begin(), g.may_mark.end());
+      all.may_bound.insert(all.may_bound.end(), g.may_bound.begin(), g.may_bound.end());
+    } else {
+      all.may_mark.insert(all.may_mark.end(), n, 1);
+      all.may_bound.insert(all.may_bound.end(), n, 1);
+    }
+  }
+  return all;
+}
+
+ProposalGate StudioController::labelled_gates(std::optional<bool> test) const {
+  ProposalGate out;
+  for (std::size_t img = 0; img < image_count(); ++img) {
+    const auto& segs = project_.images[img].segments;
+    const ProposalGate& g = detection_.gate(img);
+    const bool known = g.covers(segs.size());
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      if (segs[i].label == Label::Unlabelled || (test && is_test_segment(img, i) != *test)) continue;
+      out.may_mark.push_back(known ? g.may_mark[i] : 1);
+      out.may_bound.push_back(known ? g.may_bound[i] : 1);
+    }
+  }
+  return out;
+}
+
 std::pair<std::vector<Segment>, std::vector<Segment>> StudioController::labelled_by_split() const {
   std::pair<std::vector<Segment>, std::vector<Segment>> split;
   for (std::size_t img = 0; img < image_count(); ++img) {

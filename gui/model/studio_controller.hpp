@@ -148,6 +148,9 @@ class StudioController {
   void set_field_features(std::size_t image, FieldFeatures features) {
     detection_.set_features(image, std::move(features));
   }
+  // What the detector lets each of the image's segments be (proposal_gate.hpp); empty before a
+  // detection here.
+  const ProposalGate& proposal_gate(std::size_t image) const { return detection_.gate(image); }
   // Detector time of the current image (from the project), 0 when not detected here.
   double current_detect_ms() const;
   // Mean detector time over the project's detected images.
@@ -225,6 +228,11 @@ class StudioController {
   void start_auto_train();
   // Every segment of the project, in image order (labels kept); the labelled ones by split.
   std::vector<Segment> all_segments() const;
+  // Every segment's gate (proposal_gate.hpp) in the same order; 1s where nothing is known.
+  ProposalGate all_gates() const;
+  // The gates of the labelled segments, in the order of labelled_by_split() (`test` false: the
+  // train split, true: the test split) or, without `test`, of Project::labelled().
+  ProposalGate labelled_gates(std::optional<bool> test = std::nullopt) const;
   std::pair<std::vector<Segment>, std::vector<Segment>> labelled_by_split() const;  // train, test
   void adopt_auto_train(const AutoTrainResult& result);
   ClassSwitch& class_switch(Label cls);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "fieldlines/detect/enum_names.hpp"
 #include "fieldlines/train/calibrate.hpp"
@@ -42,14 +43,25 @@ ProposalThresholds proposal_thresholds(std::span<const Segment> all, std::span<c
   return proposal_thresholds(calibrate(all, start), labelled, start, params, stop);
 }
 
-ProposalThresholds proposal_thresholds(const Calibration& fit, std::span<const Segment> labelled,
-                                       const Thresholds& start, const ProposalParams& params, std::stop_token stop) {
+ProposalThresholds proposal_thresholds(const Calibration& fit, std::span<const Segment> all_labelled,
+                                       const Thresholds& start, const ProposalParams& params, std::stop_token stop,
+                                       const LabelledCandidates& candidates) {
   ProposalThresholds out;
   out.thresholds = start;
-  const std::size_t labels = labelled.size();
+  std::vector<Segment> kept;
   for (const TrainClass cls : {TrainClass::Boundary, TrainClass::Marking}) {
     const bool boundary = cls == TrainClass::Boundary;
-    const std::size_t positives = count(labelled, boundary ? Label::Boundary : Label::Marking);
+    const Label own = boundary ? Label::Boundary : Label::Marking;
+    const std::span<const std::uint8_t> may = boundary ? candidates.boundary : candidates.marking;
+    std::span<const Segment> labelled = all_labelled;
+    if (may.size() == all_labelled.size() && !may.empty()) {
+      kept.clear();
+      for (std::size_t i = 0; i < all_labelled.size(); ++i)
+        if (may[i] || all_labelled[i].label == own) kept.push_back(all_labelled[i]);
+      labelled = kept;
+    }
+    const std::size_t labels = labelled.size();
+    const std::size_t positives = count(labelled, own);
     ProposalSource& source = boundary ? out.boundary : out.marking;
     ClassThresholds& target = boundary ? out.thresholds.boundary.thresholds : out.thresholds.marking.thresholds;
     if (target == disabled_class()) {  // switched off: never proposed

@@ -7,6 +7,7 @@
 // A class calibration refuses is trained from a few labels: there is nothing better to wait for.
 // A class switched off (its start thresholds are disabled_class(), fieldlines/train/calibrate.hpp)
 // stays off, and so does a boundary calibration refuses (as `fieldlines calibrate` writes it).
+#include <cstdint>
 #include <span>
 #include <stop_token>
 #include <string>
@@ -38,12 +39,20 @@ struct ProposalParams {
   TrainParams train;  // target is set per class
 };
 
+// Per labelled segment, parallel to `labelled` (empty: every one): may the detector call it a
+// marking, a boundary edge (its stripes check and field boundary gate)? Each class is trained on
+// its candidates and its own labels alone: a segment the detector drops anyway says nothing
+// about where the class's colour box should end, and as a none inside it would shrink the box.
+struct LabelledCandidates {
+  std::span<const std::uint8_t> marking, boundary;
+};
+
 // `all`: every segment of the project (labels ignored); `labelled`: the human labels so far.
 // `fit`: calibrate(all, start), for callers that propose from several label sets over the same
 // segments (calibration never reads labels, so one fit serves them all).
 ProposalThresholds proposal_thresholds(const Calibration& fit, std::span<const Segment> labelled,
                                        const Thresholds& start, const ProposalParams& params = {},
-                                       std::stop_token stop = {});
+                                       std::stop_token stop = {}, const LabelledCandidates& candidates = {});
 // A marking class that can be neither trained nor calibrated keeps `start`'s thresholds; such a
 // boundary class is disabled. Never throws on
 // a lack of data; throws fieldlines::Error only for invalid `params`.

@@ -1,0 +1,64 @@
+#include "gui/model/proposal_gate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace fieldlines::studio {
+namespace {
+
+// How far below the achromatic angle a stripe's colours must stay to be proposed a marking.
+constexpr double kStripeAngleMarginDeg = 1.0;
+
+// The angle an achromatic (1,1,1) gradient makes with the class's transition (calibrate.hpp).
+double achromatic_angle_deg(const ColourClass& c) {
+  const double v[3] = {double(c.to[0]) - c.from[0], double(c.to[1]) - c.from[1], double(c.to[2]) - c.from[2]};
+  const double nv = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (nv == 0) return 0;
+  double cosine = (v[0] + v[1] + v[2]) / (nv * std::sqrt(3.0));
+  if (c.two_sided) cosine = std::abs(cosine);
+  return std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+}
+
+}  // namespace
+
+ProposalGate ProposalGate::of(std::span<const Segment> segments, const FieldBoundary& boundary,
+                              std::span<const StripeVerdict> stripes) {
+  ProposalGate gate;
+  gate.may_mark.resize(segments.size());
+  gate.may_bound.resize(segments.size());
+  gate.stripe.resize(segments.size());
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const BoundaryPlace place = place_of(segments[i], boundary);  // Below when there is no boundary
+    const StripeVerdict verdict = i < stripes.size() ? stripes[i] : StripeVerdict::Unchecked;
+    const bool on_field = place != BoundaryPlace::Above;
+    gate.may_mark[i] = verdict != StripeVerdict::NotStripe && on_field;
+    gate.stripe[i] = verdict == StripeVerdict::Stripe && on_field;
+    gate.may_bound[i] = boundary.empty() || place == BoundaryPlace::Along;
+  }
+  return gate;
+}
+
+Label ProposalGate::apply(std::size_t i, Label proposed) const {
+  if (i >= may_mark.size() || i >= may_bound.size()) return proposed;
+  if (proposed == Label::Marking && !may_mark[i]) return Label::None;
+  if (proposed == Label::Boundary && !may_bound[i]) return Label::None;
+  return proposed;
+}
+
+Label ProposalGate::propose(std::size_t i, const Segment& segment, const Thresholds& t) const {
+  const Label colour = classify(segment, t);
+  if (colour != Label::None || i >= stripe.size() || !stripe[i]) return apply(i, colour);
+  if (t.marking.thresholds == disabled_class()) return Label::None;  // switched off stays off
+  Thresholds widened = t;
+  float& max_angle = widened.marking.thresholds.max_angle_deg;
+  max_angle = std::max(max_angle, static_cast<float>(achromatic_angle_deg(t.marking) - kStripeAngleMarginDeg));
+  return classify(segment, widened) == Label::Marking ? Label::Marking : Label::None;
+}
+
+Calibration calibrate_gated(std::span<const Segment> segments, const Thresholds& start, const ProposalGate& gates) {
+  const bool known = gates.may_mark.size() == segments.size();
+  return calibrate(segments, start, {}, {}, known ? std::span<const std::uint8_t>(gates.may_mark) : std::span<const std::uint8_t>{});
+}
+
+}  // namespace fieldlines::studio

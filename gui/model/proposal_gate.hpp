@@ -1,0 +1,50 @@
+#pragma once
+// What the robot's detector lets each segment of an image be, beyond its colours: a marking
+// only when it is a stripe on the field (stripes.hpp, not above the field boundary), a boundary
+// edge only along the field boundary (the gate, field_boundary.hpp). The review proposes
+// through it, so a proposal never names what the detector would drop, and each class is trained
+// on its candidates alone (fieldlines/train/review.hpp: LabelledCandidates).
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "fieldlines/detect/classifier.hpp"
+#include "fieldlines/detect/field_boundary.hpp"
+#include "fieldlines/detect/segment.hpp"
+#include "fieldlines/train/calibrate.hpp"
+
+namespace fieldlines::studio {
+
+// The stripes check's word on one segment; Unchecked where the robot would not check either (no
+// field in view, not 8-bit BGR).
+enum class StripeVerdict : std::uint8_t { NotStripe, Unchecked, Stripe };
+
+struct ProposalGate {
+  // Per segment, 1 = may be; both empty: nothing known (not detected here), nothing gated.
+  std::vector<std::uint8_t> may_mark, may_bound;
+  // Per segment, 1 = passed the stripes check (not merely unchecked); may be empty.
+  std::vector<std::uint8_t> stripe;
+
+  // `stripes`: per segment (DetectionResult::stripes; missing ones Unchecked); `boundary`
+  // empty (no field in view): every segment may be either class.
+  static ProposalGate of(std::span<const Segment> segments, const FieldBoundary& boundary,
+                         std::span<const StripeVerdict> stripes);
+  bool covers(std::size_t segments) const { return may_mark.size() == segments && may_bound.size() == segments; }
+  // `proposed` for segment i, or None where the detector would drop it.
+  Label apply(std::size_t i, Label proposed) const;
+  // The proposal for segment i: classify() with `t`, gated. A stripe the colour box misses is
+  // a marking still when its colours lean towards the marking's transition rather than towards
+  // grey: its angle below the achromatic angle (calibrate.hpp) by a margin. Paint seen as a
+  // stripe is rarely anything else, and a box fitted on a few frames is narrower than the paint
+  // of all of them.
+  Label propose(std::size_t i, const Segment& segment, const Thresholds& t) const;
+};
+
+// Label-free calibration of `segments` (`gates` parallel, or empty) from `start`: the marking
+// class on its candidates (the stripes, as `fieldlines calibrate` fits it with the stripes stage
+// on), the boundary class on every segment: along a boundary found in few frames, its edges
+// are too few to tell from the grey ones (synthetic SSL frames: refused with, fitted without).
+Calibration calibrate_gated(std::span<const Segment> segments, const Thresholds& start, const ProposalGate& gates);
+
+}  // namespace fieldlines::studio

@@ -1,0 +1,80 @@
+// What the detector lets a segment be (gui/model/proposal_gate.hpp): the stripes check and the
+// field boundary gate as the review's proposals apply them.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "fieldlines/detect/classifier.hpp"
+#include "fieldlines/train/calibrate.hpp"
+#include "gui/model/proposal_gate.hpp"
+#include "tests/known_features.hpp"
+
+namespace fl = fieldlines;
+using fl::Label;
+using fl::studio::ProposalGate;
+using fl::studio::StripeVerdict;
+
+namespace {
+
+fl::Segment at_row(float y) {
+  fl::Segment s = fl::test::segment_with(fl::test::marking_gradient(60, 10), 100, Label::Unlabelled);
+  s.y0 = s.y1 = y;
+  return s;
+}
+
+fl::FieldBoundary flat_boundary(float y) {
+  fl::FieldBoundary b;
+  b.points = {{0, y}, {640, y}};
+  b.image_height = 480;
+  return b;
+}
+
+TEST(ProposalGate, MarkingsOnlyAsStripesOnTheFieldBoundariesOnlyAlongIt) {
+  // Above, along and below a boundary at row 100; each segment a stripe, unchecked, or not one.
+  const std::vector<fl::Segment> segs = {at_row(20), at_row(100), at_row(300), at_row(300), at_row(300)};
+  const std::vector<StripeVerdict> verdicts = {StripeVerdict::Stripe, StripeVerdict::Stripe, StripeVerdict::Stripe,
+                                               StripeVerdict::NotStripe, StripeVerdict::Unchecked};
+  const ProposalGate g = ProposalGate::of(segs, flat_boundary(100), verdicts);
+  ASSERT_TRUE(g.covers(5));
+  EXPECT_EQ(g.may_mark, (std::vector<std::uint8_t>{0, 1, 1, 0, 1}));
+  EXPECT_EQ(g.stripe, (std::vector<std::uint8_t>{0, 1, 1, 0, 0}));
+  EXPECT_EQ(g.may_bound, (std::vector<std::uint8_t>{0, 1, 0, 0, 0}));
+  EXPECT_EQ(g.apply(0, Label::Marking), Label::None);
+  EXPECT_EQ(g.apply(2, Label::Marking), Label::Marking);
+  EXPECT_EQ(g.apply(2, Label::Boundary), Label::None);
+  EXPECT_EQ(g.apply(1, Label::Boundary), Label::Boundary);
+  EXPECT_EQ(g.apply(3, Label::Marking), Label::None);
+  EXPECT_EQ(g.apply(4, Label::Marking), Label::Marking);
+  // No field in view: nothing is gated by the boundary; no verdicts: nothing by the stripes.
+  const ProposalGate open = ProposalGate::of(segs, {}, {});
+  EXPECT_EQ(open.may_mark, (std::vector<std::uint8_t>(5, 1)));
+  EXPECT_EQ(open.may_bound, (std::vector<std::uint8_t>(5, 1)));
+  EXPECT_EQ(open.stripe, (std::vector<std::uint8_t>(5, 0)));
+  // A gate of other segments (or none) changes nothing.
+  EXPECT_FALSE(g.covers(4));
+  EXPECT_EQ(ProposalGate{}.apply(0, Label::Marking), Label::Marking);
+}
+
+TEST(ProposalGate, AStripeWhoseColoursLeanToPaintIsAMarkingOutsideTheBox) {
+  fl::Thresholds t;
+  t.marking.thresholds = {10, 25, 20};  // white on green within 25 degrees; grey lies at 35.26
+  const fl::Segment paint = fl::test::segment_with(fl::test::marking_gradient(60, 30), 100, Label::Unlabelled);
+  const fl::Segment grey = fl::test::segment_with(fl::test::marking_gradient(60, 34.8), 100, Label::Unlabelled);
+  const fl::Segment faint = fl::test::segment_with(fl::test::marking_gradient(5, 20), 100, Label::Unlabelled);
+  ASSERT_EQ(fl::classify(paint, t), Label::None);
+  const std::vector<fl::Segment> segs = {paint, paint, grey, faint};
+  const std::vector<StripeVerdict> verdicts = {StripeVerdict::Stripe, StripeVerdict::Unchecked, StripeVerdict::Stripe,
+                                               StripeVerdict::Stripe};
+  const ProposalGate g = ProposalGate::of(segs, {}, verdicts);
+  EXPECT_EQ(g.propose(0, paint, t), Label::Marking);  // a stripe at 30 degrees: paint
+  EXPECT_EQ(g.propose(1, paint, t), Label::None);     // unchecked: the box alone decides
+  EXPECT_EQ(g.propose(2, grey, t), Label::None);      // within a degree of grey: no colour to go by
+  EXPECT_EQ(g.propose(3, faint, t), Label::None);     // too faint for the box's contrast
+  // The box's own members stay markings; a class switched off is never proposed.
+  const fl::Segment inside = fl::test::segment_with(fl::test::marking_gradient(60, 10), 100, Label::Unlabelled);
+  EXPECT_EQ(g.propose(0, inside, t), Label::Marking);
+  t.marking.thresholds = fl::disabled_class();
+  EXPECT_EQ(g.propose(0, paint, t), Label::None);
+}
+
+}  // namespace
