@@ -61,6 +61,7 @@ bool passes(const ClassFeatures& f, float length, const ClassThresholds& t) {
 double achromatic_angle_deg(const ColourClass& c) {
   const double v[3] = {double(c.to[0]) - c.from[0], double(c.to[1]) - c.from[1], double(c.to[2]) - c.from[2]};
   const double nv = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (nv == 0) return 0;  // no transition: no direction to compare
   double cosine = (v[0] + v[1] + v[2]) / (nv * std::sqrt(3.0));
   if (c.two_sided) cosine = std::abs(cosine);
   return std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi;
