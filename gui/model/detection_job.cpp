@@ -13,24 +13,15 @@ namespace fieldlines::studio {
 namespace {
 
 // The stripes check on every segment, not only on those the detector's thresholds call markings.
-struct StripeCheck {
-  std::vector<Segment> checked;
-  StripeWorkspace work;
-  std::vector<Marking> stripes;
-
-  std::vector<StripeVerdict> verdicts(const cv::Mat& image, const std::optional<Rgb>& field,
-                                      std::span<const Segment> segments, const DetectorParams& params) {
-    if (!field || image.type() != CV_8UC3) return std::vector<StripeVerdict>(segments.size(), StripeVerdict::Unchecked);
-    checked.assign(segments.begin(), segments.end());
-    for (Segment& s : checked) s.label = Label::Marking;
-    find_stripes(image, field, checked, params, work, stripes);
-    std::vector<StripeVerdict> out;
-    out.reserve(checked.size());
-    for (const Segment& s : checked)
-      out.push_back(s.label == Label::Marking ? StripeVerdict::Stripe : StripeVerdict::NotStripe);
-    return out;
-  }
-};
+std::vector<StripeVerdict> verdicts(StripeCheck& check, const cv::Mat& image, const std::optional<Rgb>& field,
+                                    std::span<const Segment> segments, const DetectorParams& params) {
+  if (!check.run(image, field, segments, params))
+    return std::vector<StripeVerdict>(segments.size(), StripeVerdict::Unchecked);
+  std::vector<StripeVerdict> out;
+  out.reserve(segments.size());
+  for (const std::uint8_t stripe : check.flags()) out.push_back(stripe ? StripeVerdict::Stripe : StripeVerdict::NotStripe);
+  return out;
+}
 
 }  // namespace
 
@@ -53,7 +44,7 @@ void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, 
         detector.detect(image, r.segments);
         r.detect_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         r.features = detector.features();
-        r.stripes = stripes.verdicts(image, detector.field_colour(), r.segments, every);
+        r.stripes = verdicts(stripes, image, detector.field_colour(), r.segments, every);
       } catch (const std::exception& e) {
         r.error = e.what();  // this image only; the others go on
       }

@@ -29,14 +29,11 @@ void CalibrationInputs::add_image(LineDetector& detector, const cv::Mat& image) 
 void CalibrationInputs::add_marking_candidates(const cv::Mat& image, const std::optional<Rgb>& field) {
   // Unchecked (every segment may be a marking) where the robot would not check either: stripes
   // off, or a frame without a field or in another pixel format, where the check keeps nothing.
-  if (!stripe_params_.stripes || !field || image.type() != CV_8UC3) {
+  if (!stripe_params_.stripes || !stripe_check_.run(image, field, found_, stripe_params_)) {
     marking_candidate_.insert(marking_candidate_.end(), found_.size(), 1);
     return;
   }
-  checked_ = found_;
-  for (Segment& s : checked_) s.label = Label::Marking;
-  find_stripes(image, field, checked_, stripe_params_, stripe_work_, stripes_);
-  for (const Segment& s : checked_) marking_candidate_.push_back(s.label == Label::Marking);
+  marking_candidate_.insert(marking_candidate_.end(), stripe_check_.flags().begin(), stripe_check_.flags().end());
 }
 
 void CalibrationInputs::add_segments(std::span<const Segment> segments) {

@@ -241,4 +241,15 @@ void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::spa
   }
 }
 
+bool StripeCheck::run(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<const Segment> segments,
+                      const DetectorParams& params) {
+  flags_.clear();
+  if (!field || bgr8.type() != CV_8UC3) return false;
+  checked_.assign(segments.begin(), segments.end());
+  for (Segment& s : checked_) s.label = Label::Marking;
+  find_stripes(bgr8, field, checked_, params, work_, stripes_);
+  for (const Segment& s : checked_) flags_.push_back(s.label == Label::Marking);
+  return true;
+}
+
 }  // namespace fieldlines

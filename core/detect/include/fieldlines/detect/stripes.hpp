@@ -65,4 +65,22 @@ struct StripeWorkspace {
 void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<Segment> segments,
                   const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out);
 
+// Every segment checked as a stripe as though its colours made it a marking, whatever its label:
+// what the stripes stage would keep of it under any thresholds. Calibration fits the markings on
+// these, the studio proposes through them. Buffers reused between frames.
+class StripeCheck {
+ public:
+  // False when the frame allows no check (no field colour, not 8-bit BGR); otherwise flags()
+  // holds one flag per segment, 1 for a stripe.
+  bool run(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<const Segment> segments,
+           const DetectorParams& params);
+  const std::vector<std::uint8_t>& flags() const { return flags_; }
+
+ private:
+  std::vector<Segment> checked_;
+  StripeWorkspace work_;
+  std::vector<Marking> stripes_;
+  std::vector<std::uint8_t> flags_;
+};
+
 }  // namespace fieldlines

@@ -56,11 +56,10 @@ class CalibrationInputs {
   };
   void add_marking_candidates(const cv::Mat& image, const std::optional<Rgb>& field);
 
-  std::vector<Segment> segments_, found_, checked_;
+  std::vector<Segment> segments_, found_;
   std::vector<std::uint8_t> boundary_candidate_, marking_candidate_;
   DetectorParams stripe_params_;
-  StripeWorkspace stripe_work_;
-  std::vector<Marking> stripes_;
+  StripeCheck stripe_check_;
   std::vector<Field> fields_;
   std::size_t frames_ = 0;
 };
