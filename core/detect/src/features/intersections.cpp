@@ -40,11 +40,11 @@ void add_arms(const Line& l, float t, float reach, Junction& j) {
 // Folds `ray` into the junction's arm within 25 degrees of it (10 when both are long: a far
 // corner seen in perspective is that acute, while a short stub beside an arm is the same line's
 // or a curve's), or appends it.
-void merge_ray(const Ray& ray, float reach, Junction& j) {
+void merge_ray(const Ray& ray, Junction& j) {
   for (int k = 0; k < j.num_rays; ++k) {
     Ray& r = j.rays[static_cast<std::size_t>(k)];
     const float n = std::hypot(r.ux, r.uy);
-    const bool long_arms = std::min(r.length, ray.length) >= kLongArmReaches * reach;
+    const bool long_arms = std::min(r.length, ray.length) >= kLongArmReaches * j.reach;
     if ((r.ux * ray.ux + r.uy * ray.uy) / n < (long_arms ? kLongRayMergeCos : kRayMergeCos)) continue;
     // A length-weighted mean direction: the longer arm is the better measured.
     r.ux = r.ux / n * r.length + ray.ux * ray.length;
@@ -61,7 +61,7 @@ void merge_into(const Junction& c, Junction& j) {
   j.y = (j.y * j.weight + c.y * c.weight) / w;
   j.weight = w;
   j.reach = std::max(j.reach, c.reach);
-  for (int k = 0; k < c.num_rays; ++k) merge_ray(c.rays[static_cast<std::size_t>(k)], j.reach, j);
+  for (int k = 0; k < c.num_rays; ++k) merge_ray(c.rays[static_cast<std::size_t>(k)], j);
 }
 
 float heading(const Ray& r) {
@@ -142,7 +142,7 @@ void find_intersections(std::span<const Marking> markings, const DetectorParams&
       } else {
         Junction fresh = c;
         fresh.num_rays = 0;
-        for (int k = 0; k < c.num_rays; ++k) merge_ray(c.rays[static_cast<std::size_t>(k)], fresh.reach, fresh);
+        for (int k = 0; k < c.num_rays; ++k) merge_ray(c.rays[static_cast<std::size_t>(k)], fresh);
         work.junctions.push_back(fresh);
       }
     }
