@@ -84,7 +84,8 @@ struct Calibration {
 // Fits both classes of `start` (its colours, sidedness and gradient mode are kept). With
 // `boundary_candidates` (one flag per segment, CalibrationInputs gives them) the boundary class
 // is fitted on the flagged segments alone: those along their frame's field boundary. Likewise
-// the marking class on `marking_candidates`: the stripes, where the detector checks them; then 
+// the marking class on `marking_candidates`: the stripes, where the detector checks them; its
+// colour cut then holds up to the grey spike's margin over the noise floor (no contrast box).
 Calibration calibrate(std::span<const Segment> segments, const Thresholds& start = {},
                       const CalibrationParams& params = {}, std::span<const std::uint8_t> boundary_candidates = {},
                       std::span<const std::uint8_t> marking_candidates = {});
