@@ -147,6 +147,39 @@ TEST(Stripes, ALineWithOneEdgeDetectedIsStillMeasured) {
   EXPECT_EQ(one[0].label, Label::None);
 }
 
+// A line seen in perspective widens towards the camera, so its centre drifts away from either
+// edge: the centre line follows the paint at both ends, from one edge or from both. (A constant
+// offset from the edge, its median, misses the far end by about a quarter of the near width.)
+TEST(Stripes, APerspectiveLineKeepsItsCentreAtBothEnds) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  // Paint from 3 px wide on row 40 to 27 px on row 460; its left edge is straight.
+  const cv::Point2f left_top(300, 40), left_bottom(180, 460), right_top(303, 40), right_bottom(207, 460);
+  const std::vector<cv::Point> quad{left_top, right_top, right_bottom, left_bottom};
+  cv::fillConvexPoly(clean, quad, kPaint, cv::LINE_AA);
+  const cv::Mat frame = noisy(clean);
+  const std::optional<Rgb> field = estimate_field_colour(frame);
+  ASSERT_TRUE(field);
+  const cv::Point2f centre_top = 0.5f * (left_top + right_top), centre_bottom = 0.5f * (left_bottom + right_bottom);
+  const auto edge = [](cv::Point2f a, cv::Point2f b, float shift) {  // rows 80 to 420 of an edge
+    const auto at = [&](float y) { return a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x) + shift; };
+    return Segment{.x0 = at(80), .y0 = 80, .x1 = at(420), .y1 = 420, .label = Label::Marking};
+  };
+  const Segment left = edge(left_top, left_bottom, -0.5f), right = edge(right_top, right_bottom, 0.5f);
+  StripeWorkspace work;
+  std::vector<Marking> out;
+  for (const bool twins : {false, true}) {
+    SCOPED_TRACE(twins ? "both edges" : "one edge");
+    std::vector<Segment> segments{left};
+    if (twins) segments.push_back(right);
+    find_stripes(frame, field, segments, stripes_on(), work, out);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(count(segments, Label::Marking), static_cast<int>(segments.size()));
+    // Within 1.5 px of the centreline at both ends, where the paint is 5 and 25 px wide.
+    EXPECT_LE(distance_to_line(out[0].x0, out[0].y0, centre_top, centre_bottom), 1.5f);
+    EXPECT_LE(distance_to_line(out[0].x1, out[0].y1, centre_top, centre_bottom), 1.5f);
+  }
+}
+
 TEST(Stripes, OtherLabelsAreLeftAlone) {
   const cv::Mat frame = noisy(cv::Mat(120, 160, CV_8UC3, kTurf));
   StripeWorkspace work;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include "field_pixel.hpp"
 
@@ -121,6 +123,29 @@ float median(std::array<float, 32>& v, int n) {
   return v[static_cast<std::size_t>(n / 2)];
 }
 
+// The centre offsets at the segment's ends (f = 0 and 1) of the line through (f[i], offset[i]):
+// the median of the pairwise slopes and the median intercept (Theil-Sen), so one profile that
+// crossed a robot's foot or a neighbouring line does not tilt it.
+std::pair<float, float> offset_line(const std::array<float, 32>& f, const std::array<float, 32>& offset, int n,
+                                    std::array<float, 32>& scratch) {
+  std::array<float, 32 * 31 / 2> slopes;  // NOLINT: filled below, n <= 32
+  int m = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      const float df = f[static_cast<std::size_t>(j)] - f[static_cast<std::size_t>(i)];
+      if (df > 0) slopes[static_cast<std::size_t>(m++)] = (offset[static_cast<std::size_t>(j)] - offset[static_cast<std::size_t>(i)]) / df;
+    }
+  float slope = 0;
+  if (m > 0) {
+    std::nth_element(slopes.begin(), slopes.begin() + m / 2, slopes.begin() + m);
+    slope = slopes[static_cast<std::size_t>(m / 2)];
+  }
+  for (int i = 0; i < n; ++i)
+    scratch[static_cast<std::size_t>(i)] = offset[static_cast<std::size_t>(i)] - slope * f[static_cast<std::size_t>(i)];
+  const float at0 = median(scratch, n);
+  return {at0, at0 + slope};
+}
+
 // The candidate's paint side, profiles and medians; false when it is no stripe.
 bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segment& s, const DetectorParams& params,
                        StripeWorkspace& work, Candidate& c) {
@@ -144,7 +169,7 @@ bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segmen
   c.sx = nx, c.sy = ny;
   const int samples = std::clamp(params.stripe_samples, 1, 32);
   const float bottom_width = static_cast<float>(params.stripe_max_width) * float(bgr.rows);
-  std::array<float, 32> widths{}, offsets{};
+  std::array<float, 32> widths{}, offsets{}, at{};
   int stripes = 0, decided = 0;
   for (int k = 0; k < samples; ++k) {
     const float f = (float(k) + 0.5f) / float(samples);
@@ -155,17 +180,18 @@ bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segmen
     if (p.verdict == Verdict::Stripe) {
       widths[static_cast<std::size_t>(stripes)] = p.width;
       offsets[static_cast<std::size_t>(stripes)] = p.offset;
+      at[static_cast<std::size_t>(stripes)] = f;
       ++stripes;
     }
   }
   if (2 * stripes < decided || stripes == 0) return false;
   c.width = median(widths, stripes);
-  c.offset = median(offsets, stripes);
+  std::tie(c.offset0, c.offset1) = offset_line(at, offsets, stripes, widths);  // widths: scratch now
   return true;
 }
 
 Marking centre_of(const Segment& s, const Candidate& c) {
-  return {s.x0 + c.offset * c.sx, s.y0 + c.offset * c.sy, s.x1 + c.offset * c.sx, s.y1 + c.offset * c.sy, c.width};
+  return {s.x0 + c.offset0 * c.sx, s.y0 + c.offset0 * c.sy, s.x1 + c.offset1 * c.sx, s.y1 + c.offset1 * c.sy, c.width};
 }
 
 // How far b's edge lies from a's along a's paint normal, when b is a's twin: parallel, its
@@ -182,15 +208,22 @@ float twin_distance(const Segment& a, const Candidate& ca, const Segment& b, con
   return distance > 0 ? distance : -1;
 }
 
-// One marking from two twin edges: the line half-way between them over the union of their
-// lengths along a, and their mean measured width.
-Marking merge(const Segment& a, const Candidate& ca, const Segment& b, const Candidate& cb, float distance) {
-  const float ox = a.x0 + 0.5f * distance * ca.sx, oy = a.y0 + 0.5f * distance * ca.sy;
+// One marking from two twin edges: over the union of their lengths along a, the line half-way
+// between a and b's line at each end (twins may converge by their few degrees, as a line's
+// width shrinks with distance), and their mean measured width.
+Marking merge(const Segment& a, const Candidate& ca, const Segment& b, const Candidate& cb) {
   const float len = std::hypot(a.x1 - a.x0, a.y1 - a.y0);
   const float t0 = (b.x0 - a.x0) * ca.ux + (b.y0 - a.y0) * ca.uy;
   const float t1 = (b.x1 - a.x0) * ca.ux + (b.y1 - a.y0) * ca.uy;
+  const float n0 = (b.x0 - a.x0) * ca.sx + (b.y0 - a.y0) * ca.sy;  // b's ends from a's line
+  const float n1 = (b.x1 - a.x0) * ca.sx + (b.y1 - a.y0) * ca.sy;
   const float lo = std::min({0.f, t0, t1}), hi = std::max({len, t0, t1});
-  return {ox + lo * ca.ux, oy + lo * ca.uy, ox + hi * ca.ux, oy + hi * ca.uy, 0.5f * (ca.width + cb.width)};
+  const auto centre = [&](float t) {  // half of b's distance from a's line at t along a
+    const float n = t1 != t0 ? n0 + (t - t0) / (t1 - t0) * (n1 - n0) : 0.5f * (n0 + n1);
+    return cv::Point2f(a.x0 + t * ca.ux + 0.5f * n * ca.sx, a.y0 + t * ca.uy + 0.5f * n * ca.sy);
+  };
+  const cv::Point2f p = centre(lo), q = centre(hi);
+  return {p.x, p.y, q.x, q.y, 0.5f * (ca.width + cb.width)};
 }
 
 }  // namespace
@@ -218,7 +251,7 @@ void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::spa
     if (cs[i].paired) continue;
     const Segment& a = segments[cs[i].segment];
     std::size_t best = cs.size();
-    float best_error = 0, best_distance = 0;
+    float best_error = 0;
     for (std::size_t j = i + 1; j < cs.size(); ++j) {
       if (cs[j].paired) continue;
       const float d = twin_distance(a, cs[i], segments[cs[j].segment], cs[j]);
@@ -226,12 +259,12 @@ void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::spa
       const float width = 0.5f * (cs[i].width + cs[j].width);
       const float error = std::abs(d - width);
       if (error > std::max(kTwinMinSlackPx, kTwinWidthShare * width)) continue;
-      if (best == cs.size() || error < best_error) best = j, best_error = error, best_distance = d;
+      if (best == cs.size() || error < best_error) best = j, best_error = error;
     }
     if (best < cs.size()) {
       cs[i].paired = cs[best].paired = true;
       segments[cs[best].segment].label = Label::Marking;
-      out.push_back(merge(a, cs[i], segments[cs[best].segment], cs[best], best_distance));
+      out.push_back(merge(a, cs[i], segments[cs[best].segment], cs[best]));
     } else if (params.stripe_require_twin) {
       continue;
     } else {

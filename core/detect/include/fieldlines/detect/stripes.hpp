@@ -50,7 +50,10 @@ struct StripeWorkspace {
     std::size_t segment = 0;     // index into the segments
     float ux = 0, uy = 0;        // unit direction, x0,y0 -> x1,y1
     float sx = 0, sy = 0;        // unit normal towards the paint
-    float offset = 0, width = 0; // median centre offset along (sx, sy) and median width, px
+    // The paint's centre along (sx, sy) at the segment's two ends, px: a line through the
+    // profiles' centres, since a line seen in perspective widens towards the camera and its
+    // centre drifts from the edge. The median width, px.
+    float offset0 = 0, offset1 = 0, width = 0;
     bool paired = false;
   };
   std::vector<Candidate> candidates;
