@@ -24,10 +24,12 @@
 //
 // A stripe edge whose opposite-sign twin is a stripe too (parallel within 5 degrees,
 // overlapping along its length, at about the measured width on its paint side) is merged with
-// it into one Marking: the line half-way between them over the union of their lengths, and
+// it into one Marking: over the union of their lengths, the line half-way between the two edges
+// at each end (a line seen in perspective narrows with distance, so its edges converge), and
 // their mean measured width. A stripe without a twin (its second edge was not detected: too
 // short, broken by a robot, below the detector's minimum length) is still a marking, its
-// centre line the edge shifted by the measured centre offset, unless `stripe_require_twin` is
+// centre line through the profiles' centres (a robust line fit of the centre offset along the
+// edge, for the same narrowing), unless `stripe_require_twin` is
 // set (measured in docs/detector.md: requiring twins costs recall and buys no precision).
 // Every other Marking segment, and every one when the frame shows no field, becomes None, so
 // every consumer of labels sees the check. Buffers are the caller's: no allocation once warm.
