@@ -106,6 +106,33 @@ TEST(CentreCircle, AFlatCircleOfPiecesThatDoNotChain) {
   EXPECT_TRUE(work.on_ellipse.front());
 }
 
+// A circle seen off the camera's axis is an ellipse turned by several degrees: a flat one's
+// pieces, fitted with the image's axes, miss its ends.
+TEST(CentreCircle, AFlatCircleTurnedOffTheImageAxes) {
+  for (const float turn_deg : {-7.f, 5.f}) {
+    SCOPED_TRACE(turn_deg);
+    const cv::Point2f centre(320, 220);
+    const float a = 190, b = 28, turn = turn_deg * std::numbers::pi_v<float> / 180;
+    const auto at = [&](float deg) {
+      const float t = deg * std::numbers::pi_v<float> / 180;
+      const float x = a * std::cos(t), y = b * std::sin(t);
+      return cv::Point2f(centre.x + x * std::cos(turn) - y * std::sin(turn),
+                         centre.y + x * std::sin(turn) + y * std::cos(turn));
+    };
+    std::vector<Marking> pieces;
+    for (float start = 5; start < 360; start += 50) {  // 20 degrees of turn, 30 of gap
+      const cv::Point2f p = at(start), q = at(start + 20);
+      pieces.push_back({p.x, p.y, q.x, q.y, 3});
+    }
+    CircleWorkspace work;
+    std::vector<MarkingEllipse> out;
+    find_centre_circle(pieces, work, out);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_LE(std::hypot(out[0].cx - centre.x, out[0].cy - centre.y), 0.1f * std::sqrt(a * b));
+    EXPECT_NEAR(std::max(out[0].width, out[0].height), 2 * a, 0.1f * 2 * a);
+  }
+}
+
 TEST(CentreCircle, BadInputGivesNoneAndNeverCrashes) {
   cv::Mat grey(240, 320, CV_8UC3, cv::Scalar(110, 110, 110));  // no green
   cv::ellipse(grey, cv::RotatedRect(cv::Point2f(160, 120), cv::Size2f(200, 90), 0), kPaint, 5);

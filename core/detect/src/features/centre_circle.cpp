@@ -24,6 +24,11 @@ constexpr float kMaxAxisRatio = 12;  // a circle seen at 5 degrees above the tur
 constexpr float kMaxTangentSin = 0.342f;  // sin(20 degrees)
 constexpr std::size_t kMaxPairPieces = 24;  // the longest pieces: pair hypotheses and their support
 constexpr int kMinSupport = 4;              // pieces along a pair's ellipse
+// A pair's axes are tried turned from the image's by up to 9 degrees: the camera's roll is
+// small, but a circle seen off the optical axis is an ellipse turned by several degrees, and an
+// axis off by a few degrees misses a flat ellipse's ends.
+constexpr int kRollSteps = 3;
+constexpr float kRollStepDeg = 3;
 
 // A conic A u^2 + B uv + C v^2 + D u + E v + F = 0 in coordinates centred on (mx, my) and scaled
 // by s (u = (x - mx) / s), and the ellipse it is.
@@ -69,9 +74,9 @@ bool to_ellipse(Fit& fit) {
 }
 
 // Least squares over the points marked inlier; false when they make no ellipse. `aligned`
-// leaves out the uv term (axes along the image's): four unknowns, which two short pieces
-// determine where the full conic's five need three.
-bool fit_conic(const std::vector<Point>& points, Fit& fit, bool aligned = false) {
+// leaves out the uv term (axes along the image's turned by `roll` radians): four unknowns,
+// which two short pieces determine where the full conic's five need three.
+bool fit_conic(const std::vector<Point>& points, Fit& fit, bool aligned = false, float roll = 0) {
   double mx = 0, my = 0;
   int n = 0;
   for (const Point& p : points)
@@ -86,18 +91,23 @@ bool fit_conic(const std::vector<Point>& points, Fit& fit, bool aligned = false)
   fit = Fit{};
   fit.mx = mx, fit.my = my, fit.s = s;
   if (aligned) {
+    const double co = std::cos(roll), si = std::sin(roll);
     cv::Matx<double, 4, 4> m = cv::Matx<double, 4, 4>::zeros();
     cv::Matx<double, 4, 1> rhs = cv::Matx<double, 4, 1>::zeros();
     for (const Point& p : points) {
       if (!p.inlier) continue;
-      const double u = (p.x - mx) / s, v = (p.y - my) / s;
+      const double u0 = (p.x - mx) / s, v0 = (p.y - my) / s;
+      const double u = u0 * co + v0 * si, v = -u0 * si + v0 * co;  // the axes turned by `roll`
       const cv::Matx<double, 4, 1> r(u * u - v * v, u, v, 1);
       m += r * r.t();
       rhs += r * (-v * v);
     }
     if (std::abs(cv::determinant(m)) < 1e-12) return false;
     const cv::Matx<double, 4, 1> x = m.solve(rhs, cv::DECOMP_LU);
-    fit.a = x(0), fit.c = 1 - x(0), fit.d = x(1), fit.e = x(2), fit.f = x(3);
+    // A u'^2 + C v'^2 + D u' + E v' + F in the image's axes (A + C = 1 stays a + c = 1).
+    const double ca = x(0), cc = 1 - x(0);
+    fit.a = ca * co * co + cc * si * si, fit.b = 2 * co * si * (ca - cc), fit.c = ca * si * si + cc * co * co;
+    fit.d = x(1) * co - x(2) * si, fit.e = x(1) * si + x(2) * co, fit.f = x(3);
     return to_ellipse(fit);
   }
   cv::Matx<double, 5, 5> m = cv::Matx<double, 5, 5>::zeros();
@@ -233,6 +243,7 @@ float fit_from_pairs(std::span<const Marking> pieces, CircleWorkspace& work, Fit
   work.support.assign(n, 0);
   float best_share = 0;
   int best_count = 0, best_i = -1, best_j = -1;
+  float best_roll = 0;
   // Half the pair's mean line width, at least 2.5 px (a piece is a chord: its middle lies inside
   // the curve).
   const auto tolerance_of = [&](int i, int j) {
@@ -244,13 +255,19 @@ float fit_from_pairs(std::span<const Marking> pieces, CircleWorkspace& work, Fit
       work.points.clear();
       add_samples(pieces[static_cast<std::size_t>(work.order[i])], work.points);
       add_samples(pieces[static_cast<std::size_t>(work.order[j])], work.points);
-      Fit fit;
-      if (!fit_conic(work.points, fit, true)) continue;
-      const int count = gather_support(pieces, fit, tolerance, m, work);
-      if (count < kMinSupport) continue;
-      const float share = coverage(work.points, fit);
-      if (share > best_share || (share == best_share && count > best_count))
-        best_share = share, best_count = count, best_i = work.order[i], best_j = work.order[j];
+      for (int r = -kRollSteps; r <= kRollSteps; ++r) {
+        const float roll = static_cast<float>(r) * kRollStepDeg * std::numbers::pi_v<float> / 180;
+        Fit fit;
+        if (!fit_conic(work.points, fit, true, roll)) continue;
+        // gather_support() reuses work.points: the pair's samples are put back after.
+        const int count = gather_support(pieces, fit, tolerance, m, work);
+        const float share = count < kMinSupport ? 0 : coverage(work.points, fit);
+        if (share > 0 && (share > best_share || (share == best_share && count > best_count)))
+          best_share = share, best_count = count, best_i = work.order[i], best_j = work.order[j], best_roll = roll;
+        work.points.clear();
+        add_samples(pieces[static_cast<std::size_t>(work.order[i])], work.points);
+        add_samples(pieces[static_cast<std::size_t>(work.order[j])], work.points);
+      }
     }
   }
   if (best_i < 0) return 0;
@@ -259,7 +276,7 @@ float fit_from_pairs(std::span<const Marking> pieces, CircleWorkspace& work, Fit
   work.points.clear();
   add_samples(pieces[static_cast<std::size_t>(best_i)], work.points);
   add_samples(pieces[static_cast<std::size_t>(best_j)], work.points);
-  if (!fit_conic(work.points, best, true)) return 0;
+  if (!fit_conic(work.points, best, true, best_roll)) return 0;
   float share = 0;
   for (int round = 0; round < 2; ++round) {
     if (gather_support(pieces, best, tolerance, n, work) < kMinSupport) return 0;

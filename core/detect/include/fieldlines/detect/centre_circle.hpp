@@ -22,13 +22,14 @@
 // halfway line or a robot is several chains).
 //
 // Pieces of a flat or faint circle often do not chain at all. So every pair of the 24 longest
-// pieces is also a hypothesis: fitted with axes along the image's (four unknowns, which two
-// pieces determine; the camera's roll is small), its support is those pieces along it (their
+// pieces is also a hypothesis: fitted with axes along the image's turned by -9 to 9 degrees in
+// steps of 3 (four unknowns, which two pieces determine; the camera's roll is small, but a circle
+// seen off the optical axis is a turned ellipse), its support is those pieces along it (their
 // samples within twice the pair's tolerance, their direction within 20 degrees of its tangent:
 // a line crossing the circle is no support), scored by the turn the support covers (at least
 // four pieces). The best pair's support among all pieces is fitted in full and checked as a
 // chain is, twice over; it replaces the chains' ellipse when it covers more of the turn. The
-// cap bounds the cost (at most 276 fits of four unknowns). At most one ellipse per frame (there
+// cap bounds the cost (at most 276 pairs, 1,932 fits of four unknowns). At most one ellipse per frame (there
 // is one centre circle); its confidence is the share of the turn its points cover.
 //
 // The fit is written out (a 5x5 solve on the stack) rather than cv::fitEllipse, which allocates
