@@ -182,6 +182,17 @@ TEST(Overlay, FieldFeaturesInTheirColour) {
   const cv::Mat around = canvas(cv::Rect(80, 40, 40, 40));
   EXPECT_GT(pixels_of(around, colour), 20);
 
+  // The legend says what the colours are, top right (the labels' legend holds the top left):
+  // a darkened box with the feature colour's swatch; none when asked for none.
+  const cv::Rect top_right(240, 0, 80, 30), top_left(0, 0, 80, 30);
+  EXPECT_LT(cv::mean(canvas(top_right))[1], 0.6 * turf.at<cv::Vec3b>(0, 0)[1]);
+  EXPECT_GT(pixels_of(canvas(cv::Rect(150, 0, 170, 60)), colour), 0);
+  EXPECT_EQ(cv::norm(canvas(top_left), turf(top_left), cv::NORM_INF), 0) << "the top left stays the labels'";
+  params.legend = false;
+  cv::Mat plain = turf.clone();
+  draw_field_features(plain, f, params);
+  EXPECT_GT(cv::mean(plain(top_right))[1], 0.8 * turf.at<cv::Vec3b>(0, 0)[1]);
+
   FieldFeatures bad;
   const float nan = std::numeric_limits<float>::quiet_NaN();
   bad.markings.push_back({nan, 0, 10, 10, 1});

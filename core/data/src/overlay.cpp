@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include <opencv2/imgproc.hpp>
 
@@ -33,32 +34,32 @@ void draw_segment(cv::Mat& canvas, const Segment& s, const cv::Scalar& colour, i
   cv::circle(canvas, fixed(end(s)), dot_radius << kShift, colour, cv::FILLED, cv::LINE_AA, kShift);
 }
 
-void draw_legend(cv::Mat& canvas, std::span<const Segment> segments, const OverlayParams& p) {
-  struct Entry {
-    Label label;
-    const char* name;
-  };
-  static constexpr std::array<Entry, 3> kEntries{{{Label::Marking, "marking"},
-                                                  {Label::Boundary, "boundary"},
-                                                  {Label::None, "none"}}};
+struct LegendEntry {
+  cv::Scalar colour;
+  std::string text;
+};
+
+// A darkened box of colour swatches and their text in the top-left or top-right corner, so it
+// reads on any background; nothing when it would not fit (segments matter more).
+void draw_legend(cv::Mat& canvas, std::span<const LegendEntry> entries, bool right, const OverlayParams& p) {
+  if (entries.empty()) return;
   const double scale = std::clamp(std::min(canvas.cols, canvas.rows) / 960.0, 0.35, 1.5);
   const int font = cv::FONT_HERSHEY_SIMPLEX;
   const int text_thickness = std::max(1, static_cast<int>(std::lround(scale * 1.5)));
   int baseline = 0;
-  const cv::Size glyph = cv::getTextSize("boundary 0000", font, scale, text_thickness, &baseline);
+  cv::Size glyph = cv::getTextSize("boundary 0000", font, scale, text_thickness, &baseline);
+  for (const LegendEntry& e : entries)
+    glyph.width = std::max(glyph.width, cv::getTextSize(e.text, font, scale, text_thickness, &baseline).width);
   const int pad = std::max(3, glyph.height / 2);
   const int swatch = glyph.height * 2;
   const int row = glyph.height + baseline + pad;
-  const cv::Rect box(pad, pad, swatch + glyph.width + 3 * pad, static_cast<int>(kEntries.size()) * row + pad);
-  if (box.br().x > canvas.cols || box.br().y > canvas.rows) return;  // too small: segments matter more
+  const int width = swatch + glyph.width + 3 * pad;
+  const cv::Rect box(right ? canvas.cols - pad - width : pad, pad, width, static_cast<int>(entries.size()) * row + pad);
+  if (box.x < 0 || box.br().x > canvas.cols || box.br().y > canvas.rows) return;
 
-  // Darken the box so the text reads on any background.
   cv::Mat roi = canvas(box);
   roi.convertTo(roi, -1, 0.35, 0);
-  for (std::size_t i = 0; i < kEntries.size(); ++i) {
-    const auto& e = kEntries[i];
-    const auto count = std::count_if(segments.begin(), segments.end(),
-                                     [&](const Segment& s) { return s.label == e.label; });
+  for (std::size_t i = 0; i < entries.size(); ++i) {
     const int y = box.y + pad + static_cast<int>(i) * row + glyph.height;
     const int mid = y - glyph.height / 2;
     const int swatch_width = std::max(2, text_thickness + 1);
@@ -66,11 +67,35 @@ void draw_legend(cv::Mat& canvas, std::span<const Segment> segments, const Overl
       cv::line(canvas, {box.x + pad, mid}, {box.x + pad + swatch, mid}, p.outline_colour,
                swatch_width + 2 * p.outline_px, cv::LINE_AA);
     }
-    cv::line(canvas, {box.x + pad, mid}, {box.x + pad + swatch, mid}, label_colour(e.label, p), swatch_width,
-             cv::LINE_AA);
-    cv::putText(canvas, std::string(e.name) + " " + std::to_string(count),
-                {box.x + 2 * pad + swatch, y}, font, scale, {255, 255, 255}, text_thickness, cv::LINE_AA);
+    cv::line(canvas, {box.x + pad, mid}, {box.x + pad + swatch, mid}, entries[i].colour, swatch_width, cv::LINE_AA);
+    cv::putText(canvas, entries[i].text, {box.x + 2 * pad + swatch, y}, font, scale, {255, 255, 255}, text_thickness,
+                cv::LINE_AA);
   }
+}
+
+// The labels and their counts, top left.
+void draw_label_legend(cv::Mat& canvas, std::span<const Segment> segments, const OverlayParams& p) {
+  std::array<LegendEntry, 3> entries;
+  std::size_t n = 0;
+  for (const auto& [label, name] : {std::pair{Label::Marking, "marking"}, std::pair{Label::Boundary, "boundary"},
+                                    std::pair{Label::None, "none"}}) {
+    const auto count = std::count_if(segments.begin(), segments.end(), [&](const Segment& s) { return s.label == label; });
+    entries[n++] = {label_colour(label, p), std::string(name) + " " + std::to_string(count)};
+  }
+  draw_legend(canvas, entries, false, p);
+}
+
+// What the field features' colours mean and how many there are, top right (the labels' legend
+// holds the top left).
+void draw_feature_legend(cv::Mat& canvas, const FieldFeatures& f, const OverlayParams& p) {
+  std::array<LegendEntry, 4> entries;
+  std::size_t n = 0;
+  const cv::Scalar feature = bgr(palette::kFeature);
+  if (!f.markings.empty()) entries[n++] = {feature, "stripes " + std::to_string(f.markings.size())};
+  if (!f.intersections.empty()) entries[n++] = {feature, "junctions " + std::to_string(f.intersections.size())};
+  if (!f.ellipses.empty()) entries[n++] = {feature, "centre circle"};
+  if (!f.field_boundary.points.empty()) entries[n++] = {bgr(palette::kFieldBoundary), "field boundary"};
+  draw_legend(canvas, std::span(entries.data(), n), true, p);
 }
 
 }  // namespace
@@ -138,6 +163,7 @@ void draw_field_features(cv::Mat& canvas, const FieldFeatures& features, const O
                   0.4 + 0.1 * thickness, c, t, cv::LINE_AA);
     });
   }
+  if (params.legend) draw_feature_legend(canvas, features, params);  // last: over the features
 }
 
 cv::Mat draw_overlay(const cv::Mat& image, std::span<const Segment> segments, const OverlayParams& params) {
@@ -160,7 +186,7 @@ cv::Mat draw_overlay(const cv::Mat& image, std::span<const Segment> segments, co
       draw_segment(canvas, s, label_colour(s.label, params), thickness, dot_radius);
     }
   }
-  if (params.legend) draw_legend(canvas, segments, params);
+  if (params.legend) draw_label_legend(canvas, segments, params);
   return canvas;
 }
 

@@ -30,7 +30,9 @@ struct OverlayParams {
   // total because OpenCV rounds anti-aliased widths to odd ones: 2 leaves >= 1 solid pixel.
   int outline_px = 2;
   bool endpoints = true;  // small dots at the endpoints show where segments split
-  bool legend = true;     // label names and counts in the top-left corner (skipped if it won't fit)
+  // Label names and counts in the top-left corner, and the field features' in the top-right
+  // (draw_field_features); each skipped when it won't fit.
+  bool legend = true;
 };
 
 cv::Scalar label_colour(Label label, const OverlayParams& params = {});
@@ -42,7 +44,7 @@ void draw_field_boundary(cv::Mat& canvas, std::span<const FieldBoundary::Point> 
 
 // The field features (fieldlines/detect/field_features.hpp) over the same dark outline: the
 // markings' centre lines, the ellipses, each intersection as a ring with its rays and its type
-// letter, and the field boundary (draw_field_boundary).
+// letter, and the field boundary (draw_field_boundary); with `legend`, what each colour is.
 void draw_field_features(cv::Mat& canvas, const FieldFeatures& features, const OverlayParams& params = {});
 
 // Returns an 8-bit BGR copy of `image` (any type load_image accepts) with the segments drawn.
