@@ -46,7 +46,8 @@ options:
                     (img_path = file name, B,G,R channels, reference y sign, label columns)
   --draw DIR        write an overlay per image to DIR/<name>.png
                     (the studio's palette: marking magenta, boundary blue, none yellow,
-                    each over a dark outline; legend top-left)
+                    each over a dark outline; legend top-left; with field features
+                    drawn, theirs top-right)
   --stripes         keep only markings that are painted stripes (turf, paint, turf) and write
                     their centre lines and widths ("markings" in --json); the thresholds file's
                     "stripes" parameter otherwise (default off: the reference's behaviour)
