@@ -81,18 +81,27 @@ TEST(CentreCircle, StraightLinesAndCornersAreNoCircle) {
 
 // A far, flat circle whose pieces lie apart (faint paint, a robot in front): no two chain, yet
 // any two of them give its ellipse, and the halfway line's piece across it is no part of it.
-TEST(CentreCircle, AFlatCircleOfPiecesThatDoNotChain) {
-  const cv::Point2f centre(320, 200);
-  const float a = 200, b = 40;  // semi-axes: a circle seen from 11 degrees above the turf
+// Pieces of 20 degrees of turn with gaps of 30 (they do not chain) from `first_deg` round an
+// ellipse of semi-axes a and b centred on `centre`, turned by `turn_deg`, 3 px wide.
+std::vector<Marking> flat_circle_pieces(cv::Point2f centre, float a, float b, float turn_deg, float first_deg) {
+  const float turn = turn_deg * std::numbers::pi_v<float> / 180;
   const auto at = [&](float deg) {
     const float t = deg * std::numbers::pi_v<float> / 180;
-    return cv::Point2f(centre.x + a * std::cos(t), centre.y + b * std::sin(t));
+    const float x = a * std::cos(t), y = b * std::sin(t);
+    return cv::Point2f(centre.x + x * std::cos(turn) - y * std::sin(turn), centre.y + x * std::sin(turn) + y * std::cos(turn));
   };
   std::vector<Marking> pieces;
-  for (float start = 0; start < 360; start += 50) {  // 20 degrees of turn, 30 of gap
+  for (float start = first_deg; start < 360; start += 50) {
     const cv::Point2f p = at(start), q = at(start + 20);
     pieces.push_back({p.x, p.y, q.x, q.y, 3});
   }
+  return pieces;
+}
+
+TEST(CentreCircle, AFlatCircleOfPiecesThatDoNotChain) {
+  const cv::Point2f centre(320, 200);
+  const float a = 200, b = 40;  // semi-axes: a circle seen from 11 degrees above the turf
+  std::vector<Marking> pieces = flat_circle_pieces(centre, a, b, 0, 0);
   pieces.push_back({315, 120, 325, 280, 4});  // the halfway line
   CircleWorkspace work;
   std::vector<MarkingEllipse> out;
@@ -112,21 +121,10 @@ TEST(CentreCircle, AFlatCircleTurnedOffTheImageAxes) {
   for (const float turn_deg : {-7.f, 5.f}) {
     SCOPED_TRACE(turn_deg);
     const cv::Point2f centre(320, 220);
-    const float a = 190, b = 28, turn = turn_deg * std::numbers::pi_v<float> / 180;
-    const auto at = [&](float deg) {
-      const float t = deg * std::numbers::pi_v<float> / 180;
-      const float x = a * std::cos(t), y = b * std::sin(t);
-      return cv::Point2f(centre.x + x * std::cos(turn) - y * std::sin(turn),
-                         centre.y + x * std::sin(turn) + y * std::cos(turn));
-    };
-    std::vector<Marking> pieces;
-    for (float start = 5; start < 360; start += 50) {  // 20 degrees of turn, 30 of gap
-      const cv::Point2f p = at(start), q = at(start + 20);
-      pieces.push_back({p.x, p.y, q.x, q.y, 3});
-    }
+    const float a = 190, b = 28;
     CircleWorkspace work;
     std::vector<MarkingEllipse> out;
-    find_centre_circle(pieces, work, out);
+    find_centre_circle(flat_circle_pieces(centre, a, b, turn_deg, 5), work, out);
     ASSERT_EQ(out.size(), 1u);
     EXPECT_LE(std::hypot(out[0].cx - centre.x, out[0].cy - centre.y), 0.1f * std::sqrt(a * b));
     EXPECT_NEAR(std::max(out[0].width, out[0].height), 2 * a, 0.1f * 2 * a);
