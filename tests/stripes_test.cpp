@@ -1,6 +1,7 @@
 // Stripes (stripes.hpp) on synthetic frames with known answers: painted lines drawn on turf are
 // markings with their centre and width; a wall or a post with turf on one side only is not.
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -178,6 +179,45 @@ TEST(Stripes, APerspectiveLineKeepsItsCentreAtBothEnds) {
     EXPECT_LE(distance_to_line(out[0].x0, out[0].y0, centre_top, centre_bottom), 1.5f);
     EXPECT_LE(distance_to_line(out[0].x1, out[0].y1, centre_top, centre_bottom), 1.5f);
   }
+}
+
+// A line thinner than a pixel on pale turf (the synthetic SSL field's): its one row blends a
+// little white into the turf, brighter than the field but still in its colour. With thin lines
+// accepted both of its edges are stripes and a row of brighter turf of the same colour is not;
+// the detector's default refuses both.
+TEST(Stripes, AThinLineBlendedIntoPaleTurfIsAStripeOnlyWhenThinLinesAreAccepted) {
+  const cv::Scalar pale_turf(135, 168, 94);  // B, G, R
+  const auto frame_with_row = [&](const cv::Scalar& row) {
+    cv::Mat clean(480, 640, CV_8UC3, pale_turf);
+    clean.row(240).setTo(row);
+    return noisy(clean);
+  };
+  const auto stripes = [&](const cv::Mat& frame, ThinLines thin) {
+    const std::optional<Rgb> field = estimate_field_colour(frame);
+    EXPECT_TRUE(field);
+    // The rising edge above the row and the falling one below it, bright sides facing the row:
+    // on the rows either side, where a central difference sees the row.
+    std::vector<Segment> edges{
+        {.x0 = 60, .y0 = 239, .x1 = 580, .y1 = 239, .grad_y = {50, 50, 50}, .label = Label::Marking},
+        {.x0 = 60, .y0 = 241, .x1 = 580, .y1 = 241, .grad_y = {-50, -50, -50}, .label = Label::Marking}};
+    StripeWorkspace work;
+    std::vector<Marking> out;
+    find_stripes(frame, field, edges, stripes_on(), work, out, thin);
+    return count(edges, Label::Marking);
+  };
+  constexpr double kWhite = 0.15;  // the row's share of paint
+  const cv::Scalar row = pale_turf * (1 - kWhite) + kPaint * kWhite;
+  const cv::Mat thin = frame_with_row(row);
+  const std::optional<Rgb> field = estimate_field_colour(thin);
+  ASSERT_TRUE(field);
+  // The blended row's chromaticity is within the field pixel rule's tolerance of the field's.
+  const double row_sum = row[0] + row[1] + row[2], field_sum = (*field)[0] + (*field)[1] + (*field)[2];
+  ASSERT_LE(std::abs(row[2] / row_sum - (*field)[0] / field_sum) + std::abs(row[1] / row_sum - (*field)[1] / field_sum),
+            FieldBoundaryParams{}.chroma_tolerance);
+  EXPECT_EQ(stripes(thin, ThinLines::Accepted), 2);
+  EXPECT_EQ(stripes(thin, ThinLines::Refused), 0);
+  const cv::Mat brighter_turf = frame_with_row(pale_turf * 1.2);
+  EXPECT_EQ(stripes(brighter_turf, ThinLines::Accepted), 0) << "brighter turf keeps the turf's colour";
 }
 
 TEST(Stripes, OtherLabelsAreLeftAlone) {

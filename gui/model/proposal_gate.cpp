@@ -17,12 +17,14 @@ ProposalGate ProposalGate::of(std::span<const Segment> segments, const FieldBoun
   gate.may_mark.resize(segments.size());
   gate.may_bound.resize(segments.size());
   gate.stripe.resize(segments.size());
+  gate.thin_line.resize(segments.size());
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const BoundaryPlace place = place_of(segments[i], boundary);  // Below when there is no boundary
     const StripeVerdict verdict = i < stripes.size() ? stripes[i] : StripeVerdict::Unchecked;
     const bool on_field = place != BoundaryPlace::Above;
-    gate.may_mark[i] = verdict != StripeVerdict::NotStripe && on_field;
+    gate.may_mark[i] = (verdict == StripeVerdict::Stripe || verdict == StripeVerdict::Unchecked) && on_field;
     gate.stripe[i] = verdict == StripeVerdict::Stripe && on_field;
+    gate.thin_line[i] = verdict == StripeVerdict::ThinLine && on_field;
     gate.may_bound[i] = boundary.empty() || place == BoundaryPlace::Along;
   }
   return gate;
@@ -37,7 +39,10 @@ Label ProposalGate::apply(std::size_t i, Label proposed) const {
 
 Label ProposalGate::propose(std::size_t i, const Segment& segment, const Thresholds& t) const {
   const Label colour = classify(segment, t);
-  if (colour != Label::None || i >= stripe.size() || !stripe[i]) return apply(i, colour);
+  const bool thin = i < thin_line.size() && thin_line[i];
+  if (thin && colour == Label::Marking) return Label::Marking;  // apply() would drop it
+  const bool paint = thin || (i < stripe.size() && stripe[i]);
+  if (colour != Label::None || !paint) return apply(i, colour);
   if (t.marking.thresholds == disabled_class()) return Label::None;  // switched off stays off
   Thresholds widened = t;
   float& max_angle = widened.marking.thresholds.max_angle_deg;

@@ -77,4 +77,28 @@ TEST(ProposalGate, AStripeWhoseColoursLeanToPaintIsAMarkingOutsideTheBox) {
   EXPECT_EQ(g.propose(0, paint, t), Label::None);
 }
 
+TEST(ProposalGate, AThinLineIsProposedAsPaintButLeftOutOfTheMarkingCandidates) {
+  // A line too thin for the robot's check (StripeVerdict::ThinLine) below a boundary at row 100,
+  // one above it, and an edge that is no stripe even with thin lines accepted.
+  fl::Thresholds t;
+  t.marking.thresholds = {10, 25, 20};  // white on green within 25 degrees; grey lies at 35.26
+  const fl::Segment inside = fl::test::segment_with(fl::test::marking_gradient(60, 10), 100, Label::Unlabelled);
+  const fl::Segment leaning = fl::test::segment_with(fl::test::marking_gradient(60, 30), 100, Label::Unlabelled);
+  const fl::Segment grey = fl::test::segment_with(fl::test::marking_gradient(60, 34.8), 100, Label::Unlabelled);
+  const std::vector<fl::Segment> segs = {at_row(300), at_row(20), at_row(300)};
+  const std::vector<StripeVerdict> verdicts = {StripeVerdict::ThinLine, StripeVerdict::ThinLine,
+                                               StripeVerdict::NotStripe};
+  const ProposalGate g = ProposalGate::of(segs, flat_boundary(100), verdicts);
+  EXPECT_EQ(g.thin_line, (std::vector<std::uint8_t>{1, 0, 0}));
+  EXPECT_EQ(g.may_mark, (std::vector<std::uint8_t>{0, 0, 0})) << "the detector drops it: no candidate to train on";
+  EXPECT_EQ(g.stripe, (std::vector<std::uint8_t>{0, 0, 0}));
+  EXPECT_EQ(g.propose(0, inside, t), Label::Marking);   // the box's colours on a thin line: paint
+  EXPECT_EQ(g.propose(0, leaning, t), Label::Marking);  // leaning to paint, as a stripe would
+  EXPECT_EQ(g.propose(0, grey, t), Label::None);        // grey: no colour to go by
+  EXPECT_EQ(g.propose(1, inside, t), Label::None);      // above the field boundary
+  EXPECT_EQ(g.propose(2, inside, t), Label::None);      // no stripe however thin
+  t.marking.thresholds = fl::disabled_class();
+  EXPECT_EQ(g.propose(0, inside, t), Label::None);      // a class switched off stays off
+}
+
 }  // namespace

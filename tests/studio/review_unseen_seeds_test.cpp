@@ -109,10 +109,10 @@ TEST_P(ReviewUnseenSeeds, ProposeThenEnterPerImageWithNoCorrection) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, ReviewUnseenSeeds,
-                         // Measured (agree, marking precision): ssl 4242 84.5 %, 1.000; ssl 777
-                         // 85.3 %, 1.000; kid 4242 95.2 %, 1.000; kid 777 94.7 %, 1.000.
-                         ::testing::Values(UnseenSet{"ssl", 4242, 0.82, 0.95}, UnseenSet{"ssl", 777, 0.83, 0.95},
-                                           UnseenSet{"kid", 4242, 0.93, 0.95}, UnseenSet{"kid", 777, 0.92, 0.95}),
+                         // Measured (agree, marking precision): ssl 4242 94.2 %, 1.000; ssl 777
+                         // 92.4 %, 1.000; kid 4242 95.2 %, 1.000; kid 777 95.2 %, 1.000.
+                         ::testing::Values(UnseenSet{"ssl", 4242, 0.92, 0.95}, UnseenSet{"ssl", 777, 0.90, 0.95},
+                                           UnseenSet{"kid", 4242, 0.93, 0.95}, UnseenSet{"kid", 777, 0.93, 0.95}),
                          [](const auto& info) {
                            return std::string(info.param.scene) + "_" + std::to_string(info.param.seed);
                          });

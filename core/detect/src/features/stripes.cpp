@@ -41,6 +41,21 @@ bool same_turf(const std::uint8_t* a, const std::uint8_t* b) {
   return std::abs(a[2] / sa - b[2] / sb) + std::abs(a[1] / sa - b[1] / sb) <= FieldBoundaryParams{}.chroma_tolerance;
 }
 
+// Distance of a pixel's chromaticity from grey: |r - 1/3| + |g - 1/3|, r = R / (R + G + B).
+float greyness_distance(const std::uint8_t* p) {
+  const float sum = std::max(brightness(p), 1.f);
+  return std::abs(p[2] / sum - 1.f / 3) + std::abs(p[1] / sum - 1.f / 3);
+}
+
+// Whether `peak`, brighter than `turf` and still in the field colour, is grey paint blended into
+// turf (a line thinner than a pixel, or anti-aliased) rather than brighter turf. Grey light added
+// to turf scales its distance from grey by turf / peak brightness; brighter turf keeps it. The
+// peak must come at least half-way from the one to the other.
+bool blended_paint(const std::uint8_t* peak, const std::uint8_t* turf) {
+  const float ratio = std::min(1.f, brightness(turf) / std::max(brightness(peak), 1.f));
+  return greyness_distance(peak) <= 0.5f * (1 + ratio) * greyness_distance(turf);
+}
+
 // Where between steps i and i + 1 the brightness crosses `level`, in steps.
 float crossing(const std::vector<float>& b, int i, float level) {
   const float d = b[i + 1] - b[i];
@@ -51,7 +66,7 @@ float crossing(const std::vector<float>& b, int i, float level) {
 // pixel nearest to (px, py) + (i - back) (sx, sy), back = kOuterPx + kMaxBlurPx; the profile
 // ends at the image border.
 Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, float py, float sx, float sy,
-                        float max_width, StripeWorkspace& work) {
+                        float max_width, ThinLines thin, StripeWorkspace& work) {
   constexpr int back = kOuterPx + kMaxBlurPx;
   const int steps = back + static_cast<int>(std::ceil(max_width)) + kMaxBlurPx + 2;
   work.brightness.resize(static_cast<std::size_t>(steps));
@@ -96,7 +111,12 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
     level = 0.5f * (b[peak] + 0.5f * (b[outside] + b[far_turf]));
     if (b[far_turf] < level) break;
   }
-  if (turf[peak] || b[peak] < kPaintContrast * pixel.field_sum()) return {};
+  if (b[peak] < kPaintContrast * pixel.field_sum()) return {};
+  // Paint leaves the field colour; a line too thin to fill a pixel may not, and is taken only
+  // when asked: its peak is turf with grey blended in, against the turf on both sides.
+  if (turf[peak] && !(thin == ThinLines::Accepted && blended_paint(work.pixels[peak], work.pixels[outside]) &&
+                      blended_paint(work.pixels[peak], work.pixels[far_turf])))
+    return {};
   int near_turf = peak - 1;
   while (near_turf >= 0 && !(turf[near_turf] && b[near_turf] < level)) --near_turf;
   if (near_turf < 0) return {};
@@ -148,7 +168,7 @@ std::pair<float, float> offset_line(const std::array<float, 32>& f, const std::a
 
 // The candidate's paint side, profiles and medians; false when it is no stripe.
 bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segment& s, const DetectorParams& params,
-                       StripeWorkspace& work, Candidate& c) {
+                       ThinLines thin, StripeWorkspace& work, Candidate& c) {
   const float dx = s.x1 - s.x0, dy = s.y1 - s.y0, len = std::hypot(dx, dy);
   if (!(len > 0.f)) return false;
   c.ux = dx / len, c.uy = dy / len;
@@ -175,7 +195,7 @@ bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segmen
     const float f = (float(k) + 0.5f) / float(samples);
     const float px = s.x0 + f * dx, py = s.y0 + f * dy;
     const float max_width = bottom_width * std::max(kTopWidthShare, py / float(bgr.rows));
-    const Profile p = measure_profile(bgr, pixel, px, py, nx, ny, max_width, work);
+    const Profile p = measure_profile(bgr, pixel, px, py, nx, ny, max_width, thin, work);
     decided += p.verdict != Verdict::Cut;
     if (p.verdict == Verdict::Stripe) {
       widths[static_cast<std::size_t>(stripes)] = p.width;
@@ -229,7 +249,7 @@ Marking merge(const Segment& a, const Candidate& ca, const Segment& b, const Can
 }  // namespace
 
 void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<Segment> segments,
-                  const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out) {
+                  const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out, ThinLines thin) {
   out.clear();
   work.candidates.clear();
   const bool readable = !bgr8.empty() && bgr8.type() == CV_8UC3 && field;
@@ -239,7 +259,7 @@ void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::spa
       if (segments[i].label != Label::Marking) continue;
       Candidate c;
       c.segment = i;
-      if (measure_candidate(bgr8, pixel, segments[i], params, work, c)) work.candidates.push_back(c);
+      if (measure_candidate(bgr8, pixel, segments[i], params, thin, work, c)) work.candidates.push_back(c);
     }
   }
   // Every marking that is not a stripe, and every stripe left without its twin when twins are
@@ -275,12 +295,12 @@ void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::spa
 }
 
 bool StripeCheck::run(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<const Segment> segments,
-                      const DetectorParams& params) {
+                      const DetectorParams& params, ThinLines thin) {
   flags_.clear();
   if (!field || bgr8.type() != CV_8UC3) return false;
   checked_.assign(segments.begin(), segments.end());
   for (Segment& s : checked_) s.label = Label::Marking;
-  find_stripes(bgr8, field, checked_, params, work_, stripes_);
+  find_stripes(bgr8, field, checked_, params, work_, stripes_, thin);
   for (const Segment& s : checked_) flags_.push_back(s.label == Label::Marking);
   return true;
 }

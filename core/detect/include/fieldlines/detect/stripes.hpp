@@ -7,7 +7,8 @@
 // along its length, read in the 8-bit BGR frame from outside its edge into its bright side (the
 // side its colour gradient points to; the image decides when the gradients are zero):
 //  - turf in the frame's field colour (features/field_pixel.hpp) outside the edge;
-//  - paint: a peak brighter than the field colour by a tenth;
+//  - paint: a peak brighter than the field colour by a tenth and out of the field colour (see
+//    ThinLines for paint too thin to leave it);
 //  - turf again past the paint, within the largest plausible width: in the field colour or in
 //    the colour of the turf outside (far turf in haze misses the frame's colour), and darker
 //    than half-way to the paint. The largest plausible width grows linearly towards the image
@@ -64,11 +65,20 @@ struct StripeWorkspace {
   std::vector<const std::uint8_t*> pixels;  // one profile: the pixel of each step
 };
 
+// A line too thin to fill a pixel (the synthetic SSL field's 1 cm lines a few metres off) blends
+// a little grey into turf: its peak stays in the field colour. Accepted: such a peak is paint
+// when its chromaticity lies at least half-way from the turf's on both sides to what grey light
+// brightening that turf to the peak would give (brighter turf keeps the turf's chromaticity).
+// Refused by the detector: on real frames it also takes thin grey posts and robot parts on the
+// turf (docs/detector.md); the studio proposes such lines as paint (gui/model/proposal_gate.hpp).
+enum class ThinLines : std::uint8_t { Refused, Accepted };
+
 // `bgr8`: the frame the segments were detected in (8-bit BGR; anything else keeps no marking).
 // `field`: the frame's field colour (LineDetector measures it); empty: no turf anywhere.
 // Relabels `segments` in place and writes one Marking per stripe into `out` (cleared first).
 void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<Segment> segments,
-                  const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out);
+                  const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out,
+                  ThinLines thin = ThinLines::Refused);
 
 // Every segment checked as a stripe as though its colours made it a marking, whatever its label:
 // what the stripes stage would keep of it under any thresholds. Calibration fits the markings on
@@ -78,7 +88,7 @@ class StripeCheck {
   // False when the frame allows no check (no field colour, not 8-bit BGR); otherwise flags()
   // holds one flag per segment, 1 for a stripe.
   bool run(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<const Segment> segments,
-           const DetectorParams& params);
+           const DetectorParams& params, ThinLines thin = ThinLines::Refused);
   const std::vector<std::uint8_t>& flags() const { return flags_; }
 
  private:
