@@ -37,6 +37,12 @@ struct ProposalGate {
   static ProposalGate of(std::span<const Segment> segments, const FieldBoundary& boundary,
                          std::span<const StripeVerdict> stripes);
   bool covers(std::size_t segments) const { return may_mark.size() == segments && may_bound.size() == segments; }
+  // Whether segment i's proposal is None whatever its colours (neither class may be it, and it
+  // is no thin line): the colour classes' margins say nothing about it.
+  bool decided(std::size_t i) const {
+    return i < may_mark.size() && i < may_bound.size() && !may_mark[i] && !may_bound[i] &&
+           !(i < thin_line.size() && thin_line[i]);
+  }
   // `proposed` for segment i, or None where the detector would drop it.
   Label apply(std::size_t i, Label proposed) const;
   // The proposal for segment i: classify() with `t`, gated; a thin line is a marking wherever a

@@ -88,11 +88,16 @@ std::size_t StudioController::to_review() const {
 std::optional<StudioController::Uncertain> StudioController::least_certain(std::size_t image) const {
   // Proposals were made with their own thresholds: rank by those once there are any.
   const Thresholds& t = proposal_thresholds_ ? *proposal_thresholds_ : project_.thresholds;
+  // A segment the robot's gates decide (proposal_gate.hpp) comes after every other: its colour
+  // margin is no doubt about its proposal. Still reachable once nothing else is left.
+  constexpr double kDecided = 1e12;
+  const ProposalGate& gate = detection_.gate(image);
   std::optional<Uncertain> best;
   const auto& segs = project_.images[image].segments;
+  const bool gated = gate.covers(segs.size());
   for (std::size_t i = 0; i < segs.size(); ++i) {
     if (segs[i].label != Label::Unlabelled) continue;
-    const double m = std::abs(decision_margin(features_[image][i], t));
+    const double m = std::abs(decision_margin(features_[image][i], t)) + (gated && gate.decided(i) ? kDecided : 0);
     if (!best || m < best->margin) best = Uncertain{i, m};
   }
   return best;
