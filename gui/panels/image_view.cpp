@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "gui/model/canvas_backdrop.hpp"
 #include "gui/model/feature_overlay.hpp"
 #include "gui/model/hit_test.hpp"
 #include "gui/model/shortcuts.hpp"
@@ -152,10 +153,12 @@ void draw_image_view(studio::StudioController& controller, studio::CanvasState& 
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->PushClipRect(origin, {origin.x + size.x, origin.y + size.y}, true);
-  draw->AddRectFilled(origin, {origin.x + size.x, origin.y + size.y}, IM_COL32(25, 25, 28, 255));
-  if (texture.id && texture.width > 0) {
-    draw->AddImage(texture.id, im(state.view.image_to_screen({0, 0})),
-                   im(state.view.image_to_screen(image_size)));
+  const bool has_picture = texture.id && texture.width > 0;
+  const studio::Rect picture{state.view.image_to_screen({0, 0}), state.view.image_to_screen(image_size)};
+  for (const studio::Rect& band : studio::Backdrop(viewport, has_picture ? picture : studio::Rect{}).bands())
+    draw->AddRectFilled(im(band.min), im(band.max), IM_COL32(25, 25, 28, 255));
+  if (has_picture) {
+    draw->AddImage(texture.id, im(picture.min), im(picture.max));
   } else {
     const std::string msg = controller.image_error().empty() ? "no image" : controller.image_error();
     draw->AddText({origin.x + 10, origin.y + 10}, IM_COL32(255, 120, 120, 255), msg.c_str());
