@@ -167,7 +167,7 @@ void draw_image_view(studio::StudioController& controller, studio::CanvasState& 
     for (std::size_t i = 0; i < segments.size(); ++i) {
       const auto s = studio::to_screen(segments[i], state.view);
       auto style = studio::style_for(state.mode, segments[i].label, predictions[i], controller.proposal(i));
-      style.thickness = state.settings.segment_width(style.thickness, state.view.scale());
+      style.thickness = state.settings.drawn_width(style.thickness, state.view.scale());
       draw_styled_line(draw, im(s.a), im(s.b), style);
     }
   }
@@ -182,7 +182,7 @@ void draw_image_view(studio::StudioController& controller, studio::CanvasState& 
     // white halo under a wider solid redraw, and both endpoints ringed.
     const auto s = studio::to_screen(segments[*h], state.view);
     const auto style = studio::style_for(state.mode, segments[*h].label, predictions[*h], controller.proposal(*h));
-    const float width = state.settings.segment_width(style.thickness, state.view.scale()) + 2;
+    const float width = state.settings.drawn_width(style.thickness, state.view.scale()) + 2;
     draw->AddLine(im(s.a), im(s.b), colour(studio::kOutline), width + 8);
     draw->AddLine(im(s.a), im(s.b), IM_COL32(255, 255, 255, 255), width + 4);
     draw->AddLine(im(s.a), im(s.b), colour(style.colour), width);  // solid: the class colour shows whole
