@@ -263,7 +263,9 @@ int run(const studio::StudioArgs& args) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window.get(), &width, &height);
     glViewport(0, 0, width, height);
-    glClearColor(0.1f, 0.1f, 0.11f, 1);
+    const ImVec4 kClear{0.1f, 0.1f, 0.11f, 1};  // behind the video import window
+    const ImVec4 clear = session ? gui::studio_backdrop(kClear) : kClear;
+    glClearColor(clear.x, clear.y, clear.z, clear.w);
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glfwSwapBuffers(window.get());

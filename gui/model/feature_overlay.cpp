@@ -102,7 +102,7 @@ void add_stripes(std::span<const Marking> markings, const ViewTransform& view, f
 }  // namespace
 
 float feature_thickness(const ViewSettings& settings, float view_scale) {
-  return std::max(1.0f, std::round(settings.segment_width(kBaseThickness, view_scale)));
+  return settings.drawn_width(kBaseThickness, view_scale);
 }
 
 void build_feature_drawing(const FieldFeatures& features, const FeatureLayers& layers, const ViewTransform& view,

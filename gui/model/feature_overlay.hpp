@@ -56,10 +56,8 @@ struct FeatureDrawing {
 
 // Segments of the closed polyline approximating an ellipse.
 inline constexpr int kEllipseSteps = 64;
-// The features' line width, screen px: a segment's (ViewSettings::segment_width), rounded to
-// whole pixels and at least 1. Whole widths let ImGui draw each anti-aliased line as one
-// textured quad rather than three strips of triangles, which a software renderer fills at a
-// fraction of the cost (docs/studio.md, frame time).
+// The features' line width, screen px: a segment's as drawn (ViewSettings::drawn_width: whole
+// pixels, at least 1).
 float feature_thickness(const ViewSettings& settings, float view_scale);
 
 // The primitives for the layers that are on, into `out` (cleared; its capacity is reused, as the

@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "gui/model/canvas_backdrop.hpp"
 #include "gui/model/feature_overlay.hpp"
 #include "gui/model/hit_test.hpp"
 #include "gui/model/shortcuts.hpp"
@@ -152,10 +153,12 @@ void draw_image_view(studio::StudioController& controller, studio::CanvasState& 
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->PushClipRect(origin, {origin.x + size.x, origin.y + size.y}, true);
-  draw->AddRectFilled(origin, {origin.x + size.x, origin.y + size.y}, IM_COL32(25, 25, 28, 255));
-  if (texture.id && texture.width > 0) {
-    draw->AddImage(texture.id, im(state.view.image_to_screen({0, 0})),
-                   im(state.view.image_to_screen(image_size)));
+  const bool has_picture = texture.id && texture.width > 0;
+  const studio::Rect picture{state.view.image_to_screen({0, 0}), state.view.image_to_screen(image_size)};
+  for (const studio::Rect& band : studio::Backdrop(viewport, has_picture ? picture : studio::Rect{}).bands())
+    draw->AddRectFilled(im(band.min), im(band.max), IM_COL32(25, 25, 28, 255));
+  if (has_picture) {
+    draw->AddImage(texture.id, im(picture.min), im(picture.max));
   } else {
     const std::string msg = controller.image_error().empty() ? "no image" : controller.image_error();
     draw->AddText({origin.x + 10, origin.y + 10}, IM_COL32(255, 120, 120, 255), msg.c_str());
@@ -164,7 +167,7 @@ void draw_image_view(studio::StudioController& controller, studio::CanvasState& 
     for (std::size_t i = 0; i < segments.size(); ++i) {
       const auto s = studio::to_screen(segments[i], state.view);
       auto style = studio::style_for(state.mode, segments[i].label, predictions[i], controller.proposal(i));
-      style.thickness = state.settings.segment_width(style.thickness, state.view.scale());
+      style.thickness = state.settings.drawn_width(style.thickness, state.view.scale());
       draw_styled_line(draw, im(s.a), im(s.b), style);
     }
   }
@@ -179,7 +182,7 @@ void draw_image_view(studio::StudioController& controller, studio::CanvasState& 
     // white halo under a wider solid redraw, and both endpoints ringed.
     const auto s = studio::to_screen(segments[*h], state.view);
     const auto style = studio::style_for(state.mode, segments[*h].label, predictions[*h], controller.proposal(*h));
-    const float width = state.settings.segment_width(style.thickness, state.view.scale()) + 2;
+    const float width = state.settings.drawn_width(style.thickness, state.view.scale()) + 2;
     draw->AddLine(im(s.a), im(s.b), colour(studio::kOutline), width + 8);
     draw->AddLine(im(s.a), im(s.b), IM_COL32(255, 255, 255, 255), width + 4);
     draw->AddLine(im(s.a), im(s.b), colour(style.colour), width);  // solid: the class colour shows whole

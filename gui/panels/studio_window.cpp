@@ -93,6 +93,12 @@ void draw_status_bar(const studio::StudioController& controller, const UiState& 
 
 }  // namespace
 
+ImVec4 studio_backdrop(ImVec4 behind) {
+  const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+  const auto over = [&](float top, float under) { return top * bg.w + under * (1 - bg.w); };
+  return {over(bg.x, behind.x), over(bg.y, behind.y), over(bg.z, behind.z), 1};
+}
+
 void draw_studio(studio::StudioController& controller, UiState& ui, const CanvasTexture& texture) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(viewport->WorkPos);
@@ -101,7 +107,7 @@ void draw_studio(studio::StudioController& controller, UiState& ui, const Canvas
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {6, 6});
   ImGui::Begin("fieldlines studio", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBringToFrontOnFocus |
-                   ImGuiWindowFlags_NoSavedSettings);
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBackground);  // studio_backdrop
   ImGui::PopStyleVar(2);
 
   const float side_width = 400;

@@ -175,6 +175,17 @@ TEST(OverlayStyle, TheLineWidthSettingScalesEverySegment) {
   EXPECT_FLOAT_EQ(settings.segment_width(2, 1), 1.0f);
 }
 
+TEST(OverlayStyle, LinesAreDrawnInWholePixels) {
+  fs::ViewSettings settings;
+  EXPECT_FLOAT_EQ(settings.drawn_width(2, 1), 2);
+  EXPECT_FLOAT_EQ(settings.drawn_width(2, 1.34f), 2);  // 2.32 at a typical fit zoom
+  EXPECT_FLOAT_EQ(settings.drawn_width(2, 1.8f), 3);   // 2.68
+  settings.set_line_width(0.5f);
+  EXPECT_FLOAT_EQ(settings.drawn_width(1, 1), 1);  // never thinner than a pixel
+  for (const float scale : {0.5f, 1.0f, 1.34f, 4.0f, 30.0f})
+    EXPECT_NEAR(settings.drawn_width(2, scale), settings.segment_width(2, scale), 0.5f) << scale;
+}
+
 TEST(OverlayStyle, LinesGrowWithTheZoomButNeverShrink) {
   EXPECT_FLOAT_EQ(fs::zoomed_thickness(2, 1), 2);
   EXPECT_FLOAT_EQ(fs::zoomed_thickness(2, 0.25f), 2);  // zoomed out: as at 1:1
