@@ -77,10 +77,11 @@ void draw_legend(cv::Mat& canvas, std::span<const LegendEntry> entries, bool rig
 void draw_label_legend(cv::Mat& canvas, std::span<const Segment> segments, const OverlayParams& p) {
   std::array<LegendEntry, 3> entries;
   std::size_t n = 0;
-  for (const auto& [label, name] : {std::pair{Label::Marking, "marking"}, std::pair{Label::Boundary, "boundary"},
-                                    std::pair{Label::None, "none"}}) {
+  for (const auto& entry : {std::pair{Label::Marking, "marking"}, std::pair{Label::Boundary, "boundary"},
+                            std::pair{Label::None, "none"}}) {
+    const Label label = entry.first;  // a named copy: clang before 16 cannot capture a binding
     const auto count = std::count_if(segments.begin(), segments.end(), [&](const Segment& s) { return s.label == label; });
-    entries[n++] = {label_colour(label, p), std::string(name) + " " + std::to_string(count)};
+    entries[n++] = {label_colour(label, p), std::string(entry.second) + " " + std::to_string(count)};
   }
   draw_legend(canvas, entries, false, p);
 }
