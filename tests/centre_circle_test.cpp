@@ -131,6 +131,38 @@ TEST(CentreCircle, AFlatCircleTurnedOffTheImageAxes) {
   }
 }
 
+// ELSED fits a straight line to a curved run of pixels: near a flat ellipse's sharp ends a piece
+// is a tangent whose ends stand off the paint, and a fit to the pieces comes out too long. Read
+// in the frame, the paint's centre round the ellipse puts it back.
+TEST(CentreCircle, TheFitIsRefinedOnThePaint) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  const cv::Point2f centre(320, 240);
+  const float a = 200, b = 24;  // semi-axes, the image's axes
+  cv::ellipse(clean, cv::RotatedRect(centre, cv::Size2f(2 * a, 2 * b), 0), kPaint, 4, cv::LINE_AA);
+  const cv::Mat frame = noisy(clean);
+  // Tangents at the middle of each 24 degrees of turn, as long as the arc they stand for.
+  std::vector<Marking> pieces;
+  for (float mid = 0; mid < 360; mid += 36) {
+    const float t = mid * std::numbers::pi_v<float> / 180, half_turn = 12 * std::numbers::pi_v<float> / 180;
+    const cv::Point2f p(centre.x + a * std::cos(t), centre.y + b * std::sin(t));
+    const cv::Point2f tangent = half_turn * cv::Point2f(-a * std::sin(t), b * std::cos(t));  // half the arc, about
+    pieces.push_back({p.x - tangent.x, p.y - tangent.y, p.x + tangent.x, p.y + tangent.y, 4});
+  }
+  CircleWorkspace work;
+  std::vector<MarkingEllipse> from_pieces, on_paint;
+  find_centre_circle(pieces, work, from_pieces);
+  find_centre_circle(pieces, work, on_paint, frame);
+  ASSERT_EQ(from_pieces.size(), 1u);
+  ASSERT_EQ(on_paint.size(), 1u);
+  const auto long_axis = [](const MarkingEllipse& e) { return std::max(e.width, e.height); };
+  const auto short_axis = [](const MarkingEllipse& e) { return std::min(e.width, e.height); };
+  EXPECT_GT(std::abs(long_axis(from_pieces[0]) - 2 * a), 0.01f * 2 * a) << "the pieces alone: too long";
+  EXPECT_LE(std::abs(long_axis(on_paint[0]) - 2 * a), 0.005f * 2 * a) << long_axis(on_paint[0]);
+  EXPECT_LE(std::abs(short_axis(on_paint[0]) - 2 * b), 1.f) << short_axis(on_paint[0]);
+  EXPECT_LE(std::hypot(on_paint[0].cx - centre.x, on_paint[0].cy - centre.y), 1.f);
+  EXPECT_EQ(on_paint[0].confidence, from_pieces[0].confidence) << "the turn covered is the pieces'";
+}
+
 TEST(CentreCircle, BadInputGivesNoneAndNeverCrashes) {
   cv::Mat grey(240, 320, CV_8UC3, cv::Scalar(110, 110, 110));  // no green
   cv::ellipse(grey, cv::RotatedRect(cv::Point2f(160, 120), cv::Size2f(200, 90), 0), kPaint, 5);

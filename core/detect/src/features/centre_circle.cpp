@@ -288,9 +288,76 @@ float fit_from_pairs(std::span<const Marking> pieces, CircleWorkspace& work, Fit
   return gather_support(pieces, best, tolerance, n, work) < kMinSupport ? 0 : share;
 }
 
+// The paint's centre across the fitted ellipse, read in the frame: at 72 points round it, on
+// the part of the turn its pieces cover, the middle of the pixels brighter than half-way from
+// the darkest to the brightest within a few px along the normal; the conic refitted to them. A
+// piece is a chord or a tangent of the curve, so the first fit lies off the paint near a flat
+// ellipse's sharp ends; the paint does not. Keeps `fit` unless the refit is an ellipse, covers
+// as much of the turn, and most of its points lie on it.
+void refine_on_paint(const cv::Mat& bgr, float tolerance, CircleWorkspace& work, Fit& fit) {
+  constexpr int kSteps = 72;
+  constexpr int kMaxHalf = 31;
+  const int half = std::min(kMaxHalf, static_cast<int>(std::ceil(std::max(4.f, 1.5f * tolerance))));
+  // The bins of the turn the pieces cover (coverage()'s), so no point is read where the circle
+  // is out of the frame or behind a robot.
+  std::array<bool, kCoverageBins> seen{};
+  const float co = std::cos(fit.theta), si = std::sin(fit.theta);
+  for (const Point& p : work.points) {
+    if (!p.inlier) continue;
+    const float dx = p.x - fit.ellipse.cx, dy = p.y - fit.ellipse.cy;
+    const float phi = std::atan2((-dx * si + dy * co) / fit.semi_b, (dx * co + dy * si) / fit.semi_a);
+    seen[static_cast<std::size_t>(std::clamp(static_cast<int>((phi + std::numbers::pi_v<float>) / (2 * std::numbers::pi_v<float>) * kCoverageBins), 0, kCoverageBins - 1))] = true;
+  }
+  std::vector<Point>& refined = work.refined;
+  refined.clear();
+  for (int k = 0; k < kSteps; ++k) {
+    const float phi = -std::numbers::pi_v<float> + (static_cast<float>(k) + 0.5f) * 2 * std::numbers::pi_v<float> / kSteps;
+    if (!seen[static_cast<std::size_t>(k * kCoverageBins / kSteps)]) continue;
+    const float ex = fit.semi_a * std::cos(phi), ey = fit.semi_b * std::sin(phi);
+    const float x = fit.ellipse.cx + ex * co - ey * si, y = fit.ellipse.cy + ex * si + ey * co;
+    if (!(std::abs(x) < 1e6f && std::abs(y) < 1e6f)) continue;  // far off any frame (or NaN)
+    // The normal: the implicit function's gradient, in the ellipse's axes turned back.
+    const float gx = ex / (fit.semi_a * fit.semi_a), gy = ey / (fit.semi_b * fit.semi_b);
+    float nx = gx * co - gy * si, ny = gx * si + gy * co;
+    const float n = std::hypot(nx, ny);
+    if (!(n > 0)) continue;
+    nx /= n, ny /= n;
+    std::array<float, 2 * kMaxHalf + 1> b{};
+    bool inside = true;
+    float lo = 1e9f, hi = -1e9f;
+    for (int t = -half; t <= half && inside; ++t) {
+      const int px = static_cast<int>(std::lround(x + static_cast<float>(t) * nx));
+      const int py = static_cast<int>(std::lround(y + static_cast<float>(t) * ny));
+      inside = px >= 0 && py >= 0 && px < bgr.cols && py < bgr.rows;
+      if (!inside) break;
+      const std::uint8_t* q = bgr.ptr<std::uint8_t>(py) + 3 * px;
+      const float v = static_cast<float>(q[0] + q[1] + q[2]);
+      b[static_cast<std::size_t>(t + half)] = v;
+      lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    if (!inside || hi - lo < 30) continue;  // no paint to see
+    const float level = 0.5f * (lo + hi);
+    float sum = 0, weight = 0;
+    for (int t = -half; t <= half; ++t) {
+      const float v = b[static_cast<std::size_t>(t + half)] - level;
+      if (v > 0) sum += v * static_cast<float>(t), weight += v;
+    }
+    if (!(weight > 0)) continue;
+    const float offset = sum / weight;
+    refined.push_back({x + offset * nx, y + offset * ny, 1});
+  }
+  Fit candidate;
+  if (refined.size() < 12 || !fit_conic(refined, candidate)) return;
+  int close = 0;
+  for (const Point& p : refined) close += distance(candidate, p.x, p.y) <= tolerance;
+  if (2 * close < static_cast<int>(refined.size())) return;
+  fit = candidate;
+}
+
 }  // namespace
 
-void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, std::vector<MarkingEllipse>& out) {
+void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, std::vector<MarkingEllipse>& out,
+                        const cv::Mat& bgr) {
   out.clear();
   const std::size_t n = pieces.size();
 
@@ -387,6 +454,15 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
   if (share <= 0) {
     std::fill(work.on_ellipse.begin(), work.on_ellipse.end(), std::uint8_t{0});
     return;
+  }
+  if (!bgr.empty() && bgr.type() == CV_8UC3) {
+    // The turn the ellipse's pieces cover, and their tolerance (half their mean width).
+    work.points.clear();
+    float width = 0;
+    int count = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (work.on_ellipse[i]) add_samples(pieces[i], work.points), width += pieces[i].width, ++count;
+    if (count > 0) refine_on_paint(bgr, std::max(2.5f, width / static_cast<float>(count) / 2), work, fit);
   }
   out.push_back(fit.ellipse);
   out.back().confidence = share;

@@ -32,9 +32,16 @@
 // cap bounds the cost (at most 276 pairs, 1,932 fits of four unknowns). At most one ellipse per frame (there
 // is one centre circle); its confidence is the share of the turn its points cover.
 //
+// Given the frame, the ellipse is then refitted to the paint itself: at 72 points round it, on
+// the turn its pieces cover, the middle of the bright pixels within 1.5 tolerances (at least 4
+// px) along its normal. A piece is a straight fit to a curved run of pixels, a tangent whose
+// ends stand off the paint near a flat ellipse's sharp ends, so the pieces' fit comes out too
+// long; the paint's is not. Kept when at least 12 points are read and most lie on the refit.
+//
 // The fit is written out (a 5x5 solve on the stack) rather than cv::fitEllipse, which allocates
 // per call: warm detect allocates nothing with this stage on.
 #include <cstdint>
+#include <opencv2/core/mat.hpp>
 #include <span>
 #include <vector>
 
@@ -54,10 +61,13 @@ struct CircleWorkspace {
   std::vector<std::uint8_t> on_ellipse;  // per piece: part of the ellipse found
   std::vector<int> order;                // pieces by length
   std::vector<std::uint8_t> support;     // per piece: along the ellipse being tried
+  std::vector<Point> refined;            // the paint's centre read round the ellipse
 };
 
 // Fits the centre circle to `pieces` (stripe centre lines of short segments) into `out`
 // (cleared first: empty or one ellipse); `work.on_ellipse[i]` tells whether piece i is on it.
-void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, std::vector<MarkingEllipse>& out);
+// `bgr`: the 8-bit BGR frame they were found in, for the refit on the paint; empty: none.
+void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, std::vector<MarkingEllipse>& out,
+                        const cv::Mat& bgr = {});
 
 }  // namespace fieldlines
