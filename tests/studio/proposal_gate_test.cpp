@@ -16,8 +16,21 @@ using fl::studio::StripeVerdict;
 
 namespace {
 
+// An unlabelled edge from green towards white paint, `contrast` strong, `angle_deg` off the
+// marking's colour transition.
+fl::Segment edge_at(double contrast, double angle_deg) {
+  return fl::test::segment_with(fl::test::marking_gradient(contrast, angle_deg), 100, Label::Unlabelled);
+}
+
+// A marking class of white on green within 25 degrees (grey lies at 35.26).
+fl::Thresholds box_within_25_degrees() {
+  fl::Thresholds t;
+  t.marking.thresholds = {10, 25, 20};
+  return t;
+}
+
 fl::Segment at_row(float y) {
-  fl::Segment s = fl::test::segment_with(fl::test::marking_gradient(60, 10), 100, Label::Unlabelled);
+  fl::Segment s = edge_at(60, 10);
   s.y0 = s.y1 = y;
   return s;
 }
@@ -56,11 +69,10 @@ TEST(ProposalGate, MarkingsOnlyAsStripesOnTheFieldBoundariesOnlyAlongIt) {
 }
 
 TEST(ProposalGate, AStripeWhoseColoursLeanToPaintIsAMarkingOutsideTheBox) {
-  fl::Thresholds t;
-  t.marking.thresholds = {10, 25, 20};  // white on green within 25 degrees; grey lies at 35.26
-  const fl::Segment paint = fl::test::segment_with(fl::test::marking_gradient(60, 30), 100, Label::Unlabelled);
-  const fl::Segment grey = fl::test::segment_with(fl::test::marking_gradient(60, 34.8), 100, Label::Unlabelled);
-  const fl::Segment faint = fl::test::segment_with(fl::test::marking_gradient(5, 20), 100, Label::Unlabelled);
+  fl::Thresholds t = box_within_25_degrees();
+  const fl::Segment paint = edge_at(60, 30);
+  const fl::Segment grey = edge_at(60, 34.8);
+  const fl::Segment faint = edge_at(5, 20);
   ASSERT_EQ(fl::classify(paint, t), Label::None);
   const std::vector<fl::Segment> segs = {paint, paint, grey, faint};
   const std::vector<StripeVerdict> verdicts = {StripeVerdict::Stripe, StripeVerdict::Unchecked, StripeVerdict::Stripe,
@@ -71,7 +83,7 @@ TEST(ProposalGate, AStripeWhoseColoursLeanToPaintIsAMarkingOutsideTheBox) {
   EXPECT_EQ(g.propose(2, grey, t), Label::None);      // within a degree of grey: no colour to go by
   EXPECT_EQ(g.propose(3, faint, t), Label::None);     // too faint for the box's contrast
   // The box's own members stay markings; a class switched off is never proposed.
-  const fl::Segment inside = fl::test::segment_with(fl::test::marking_gradient(60, 10), 100, Label::Unlabelled);
+  const fl::Segment inside = edge_at(60, 10);
   EXPECT_EQ(g.propose(0, inside, t), Label::Marking);
   t.marking.thresholds = fl::disabled_class();
   EXPECT_EQ(g.propose(0, paint, t), Label::None);
@@ -80,11 +92,10 @@ TEST(ProposalGate, AStripeWhoseColoursLeanToPaintIsAMarkingOutsideTheBox) {
 TEST(ProposalGate, AThinLineIsProposedAsPaintButLeftOutOfTheMarkingCandidates) {
   // A line too thin for the robot's check (StripeVerdict::ThinLine) below a boundary at row 100,
   // one above it, and an edge that is no stripe even with thin lines accepted.
-  fl::Thresholds t;
-  t.marking.thresholds = {10, 25, 20};  // white on green within 25 degrees; grey lies at 35.26
-  const fl::Segment inside = fl::test::segment_with(fl::test::marking_gradient(60, 10), 100, Label::Unlabelled);
-  const fl::Segment leaning = fl::test::segment_with(fl::test::marking_gradient(60, 30), 100, Label::Unlabelled);
-  const fl::Segment grey = fl::test::segment_with(fl::test::marking_gradient(60, 34.8), 100, Label::Unlabelled);
+  fl::Thresholds t = box_within_25_degrees();
+  const fl::Segment inside = edge_at(60, 10);
+  const fl::Segment leaning = edge_at(60, 30);
+  const fl::Segment grey = edge_at(60, 34.8);
   const std::vector<fl::Segment> segs = {at_row(300), at_row(20), at_row(300)};
   const std::vector<StripeVerdict> verdicts = {StripeVerdict::ThinLine, StripeVerdict::ThinLine,
                                                StripeVerdict::NotStripe};
@@ -92,6 +103,10 @@ TEST(ProposalGate, AThinLineIsProposedAsPaintButLeftOutOfTheMarkingCandidates) {
   EXPECT_EQ(g.thin_line, (std::vector<std::uint8_t>{1, 0, 0}));
   EXPECT_EQ(g.may_mark, (std::vector<std::uint8_t>{0, 0, 0})) << "the detector drops it: no candidate to train on";
   EXPECT_EQ(g.stripe, (std::vector<std::uint8_t>{0, 0, 0}));
+  // The thin line's proposal rests on its colours; the others are none whatever they are.
+  EXPECT_FALSE(g.decided(0));
+  EXPECT_TRUE(g.decided(1));
+  EXPECT_TRUE(g.decided(2));
   EXPECT_EQ(g.propose(0, inside, t), Label::Marking);   // the box's colours on a thin line: paint
   EXPECT_EQ(g.propose(0, leaning, t), Label::Marking);  // leaning to paint, as a stripe would
   EXPECT_EQ(g.propose(0, grey, t), Label::None);        // grey: no colour to go by
