@@ -238,8 +238,11 @@ Marking merge(const Segment& a, const Candidate& ca, const Segment& b, const Can
   const float n0 = (b.x0 - a.x0) * ca.sx + (b.y0 - a.y0) * ca.sy;  // b's ends from a's line
   const float n1 = (b.x1 - a.x0) * ca.sx + (b.y1 - a.y0) * ca.sy;
   const float lo = std::min({0.f, t0, t1}), hi = std::max({len, t0, t1});
-  const auto centre = [&](float t) {  // half of b's distance from a's line at t along a
-    const float n = t1 != t0 ? n0 + (t - t0) / (t1 - t0) * (n1 - n0) : 0.5f * (n0 + n1);
+  // Half of b's distance from a's line at t along a; beyond b's ends, its distance there (b may
+  // be short, and its few degrees carried along all of a would tilt the centre line).
+  const auto centre = [&](float t) {
+    const float u = t1 != t0 ? std::clamp((t - t0) / (t1 - t0), 0.f, 1.f) : 0.5f;
+    const float n = n0 + u * (n1 - n0);
     return cv::Point2f(a.x0 + t * ca.ux + 0.5f * n * ca.sx, a.y0 + t * ca.uy + 0.5f * n * ca.sy);
   };
   const cv::Point2f p = centre(lo), q = centre(hi);
