@@ -17,7 +17,9 @@ namespace fieldlines::studio {
 class Backdrop {
  public:
   Backdrop(const Rect& area, const Rect& hole);
-  std::span<const Rect> bands() const { return {bands_.data(), count_}; }
+  // A view of this object's own array: keep the Backdrop alive while it is read.
+  std::span<const Rect> bands() const& { return {bands_.data(), count_}; }
+  std::span<const Rect> bands() const&& = delete;  // a temporary's would dangle
 
  private:
   std::array<Rect, 4> bands_{};

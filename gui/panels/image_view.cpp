@@ -155,8 +155,9 @@ void draw_image_view(studio::StudioController& controller, studio::CanvasState& 
   draw->PushClipRect(origin, {origin.x + size.x, origin.y + size.y}, true);
   const bool has_picture = texture.id && texture.width > 0;
   const studio::Rect picture{state.view.image_to_screen({0, 0}), state.view.image_to_screen(image_size)};
-  for (const studio::Rect& band : studio::Backdrop(viewport, has_picture ? picture : studio::Rect{}).bands())
-    draw->AddRectFilled(im(band.min), im(band.max), IM_COL32(25, 25, 28, 255));
+  // Named: bands() views the object's own array, which a temporary would take with it.
+  const studio::Backdrop backdrop(viewport, has_picture ? picture : studio::Rect{});
+  for (const studio::Rect& band : backdrop.bands()) draw->AddRectFilled(im(band.min), im(band.max), IM_COL32(25, 25, 28, 255));
   if (has_picture) {
     draw->AddImage(texture.id, im(picture.min), im(picture.max));
   } else {

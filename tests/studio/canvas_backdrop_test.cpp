@@ -43,7 +43,8 @@ TEST(CanvasBackdrop, BandsAndImageTileTheCanvasOnce) {
 }
 
 TEST(CanvasBackdrop, AZoomedInImageLeavesNoBackdrop) {
-  EXPECT_TRUE(fs::Backdrop({{0, 0}, {100, 80}}, {{-500, -400}, {900, 700}}).bands().empty());
+  const fs::Backdrop backdrop({{0, 0}, {100, 80}}, {{-500, -400}, {900, 700}});
+  EXPECT_TRUE(backdrop.bands().empty());
 }
 
 TEST(CanvasBackdrop, APannedImageIsClippedToTheCanvas) {
