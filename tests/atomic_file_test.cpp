@@ -1,10 +1,12 @@
 // Atomic saves and the clean-up of temporary files that killed saves leave behind.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
+#include <future>
 #include <string>
 
 #include "fieldlines/detect/atomic_file.hpp"
@@ -46,6 +48,17 @@ TEST_F(AtomicFile, WriteReplacesAndLeavesNoTemporaryFiles) {
   } catch (const fl::Error& e) {
     EXPECT_NE(std::string(e.what()).find("no_such_dir"), std::string::npos);
   }
+}
+
+// A pipe (or a device: /dev/null) is written in place; a file renamed over it would replace it.
+TEST_F(AtomicFile, APipeIsWrittenInPlaceNotReplaced) {
+  const fs::path fifo = dir_ / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  auto reader = std::async(std::launch::async, [&] { return fieldlines::read_file(fifo); });
+  fieldlines::write_file_atomically(fifo, "through the pipe");
+  EXPECT_EQ(reader.get(), "through the pipe");
+  EXPECT_TRUE(fs::is_fifo(fifo)) << "still the pipe";
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator{}), 1) << "no temporary left";
 }
 
 TEST_F(AtomicFile, StaleTemporariesOfThisFileOnlyAreRemoved) {

@@ -55,24 +55,48 @@ std::string temporary_prefix(const std::filesystem::path& path) {
   return prefix;
 }
 
+namespace {
+
+// Writes all of `contents` to `fd`; false with errno set on failure.
+bool write_all(int fd, std::string_view contents) {
+  const char* data = contents.data();
+  std::size_t left = contents.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, data, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    data += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+}  // namespace
+
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
   if (path.empty()) throw Error("cannot save: empty file name");
+  // A device or a pipe (/dev/null, /dev/stdout, a FIFO) is written in place: renaming a file
+  // over it would replace the device itself (as root, /dev/null with a regular file).
+  std::error_code ec;
+  const std::filesystem::file_type type = std::filesystem::status(path, ec).type();
+  if (!ec && (type == std::filesystem::file_type::character || type == std::filesystem::file_type::block ||
+              type == std::filesystem::file_type::fifo || type == std::filesystem::file_type::socket)) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd < 0) throw Error("cannot save '" + path.string() + "': " + errno_text());
+    const bool written = write_all(fd, contents);
+    const std::string why = written ? std::string() : errno_text();
+    if (::close(fd) != 0 && written) throw Error("cannot save '" + path.string() + "': " + errno_text());
+    if (!written) throw Error("cannot save '" + path.string() + "': " + why);
+    return;
+  }
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
   // A random suffix keeps concurrent savers (two studio windows) from sharing a temporary file.
   std::random_device rd;
   TempFile tmp(dir / (temporary_prefix(path) + std::to_string(rd() % 1000000)));
   if (tmp.fd() < 0) throw Error("cannot save '" + path.string() + "': " + errno_text());
-  const char* data = contents.data();
-  std::size_t left = contents.size();
-  while (left > 0) {
-    const ssize_t n = ::write(tmp.fd(), data, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw Error("cannot save '" + path.string() + "': " + errno_text());
-    }
-    data += n;
-    left -= static_cast<std::size_t>(n);
-  }
+  if (!write_all(tmp.fd(), contents)) throw Error("cannot save '" + path.string() + "': " + errno_text());
   // fsync before rename: otherwise a power cut can leave the new name pointing at empty data.
   if (::fsync(tmp.fd()) != 0) throw Error("cannot save '" + path.string() + "': " + errno_text());
   if (!tmp.close()) throw Error("cannot save '" + path.string() + "': " + errno_text());

@@ -9,7 +9,8 @@ namespace fieldlines {
 
 // Writes `contents` to a temporary file in the same folder, flushes it to disk and renames it
 // over `path` (rename is atomic within one file system). Throws fieldlines::Error naming the path
-// when any step fails; the temporary file is removed on failure.
+// when any step fails; the temporary file is removed on failure. An existing device, pipe or
+// socket at `path` (/dev/null, /dev/stdout) is written in place instead: a rename would replace it.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
 
 // Name prefix of the temporary files a save of `path` writes beside it (".NAME.tmp" plus a
