@@ -125,18 +125,22 @@ bool fit_conic(const std::vector<Point>& points, Fit& fit, bool aligned = false,
   return to_ellipse(fit);
 }
 
+// The bin of the turn (kCoverageBins round the ellipse, seen from its centre in its own axes)
+// that `p` lies in; co, si: the cosine and sine of fit.theta (the callers' loops compute them once).
+int turn_bin(const Fit& fit, float co, float si, const Point& p) {
+  const float dx = p.x - fit.ellipse.cx, dy = p.y - fit.ellipse.cy;
+  const float phi = std::atan2((-dx * si + dy * co) / fit.semi_b, (dx * co + dy * si) / fit.semi_a);
+  return std::clamp(static_cast<int>((phi + std::numbers::pi_v<float>) / (2 * std::numbers::pi_v<float>) * kCoverageBins), 0,
+                    kCoverageBins - 1);
+}
+
 // The share of the ellipse's turn (seen from its centre, in its own axes) the inliers cover.
 // Points come in runs of kSamplesPerPiece per piece: the turn between two inlier samples of one
 // piece is covered too (a long chord of a flat ellipse spans several bins between its samples).
 float coverage(const std::vector<Point>& points, const Fit& fit) {
-  constexpr float two_pi = 2 * std::numbers::pi_v<float>;
   std::array<bool, kCoverageBins> seen{};
   const float co = std::cos(fit.theta), si = std::sin(fit.theta);
-  const auto bin_of = [&](const Point& p) {
-    const float dx = p.x - fit.ellipse.cx, dy = p.y - fit.ellipse.cy;
-    const float phi = std::atan2((-dx * si + dy * co) / fit.semi_b, (dx * co + dy * si) / fit.semi_a);
-    return std::clamp(static_cast<int>((phi + std::numbers::pi_v<float>) / two_pi * kCoverageBins), 0, kCoverageBins - 1);
-  };
+  const auto bin_of = [&](const Point& p) { return turn_bin(fit, co, si, p); };
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!points[i].inlier) continue;
     const int bin = bin_of(points[i]);
@@ -302,12 +306,8 @@ void refine_on_paint(const cv::Mat& bgr, float tolerance, CircleWorkspace& work,
   // is out of the frame or behind a robot.
   std::array<bool, kCoverageBins> seen{};
   const float co = std::cos(fit.theta), si = std::sin(fit.theta);
-  for (const Point& p : work.points) {
-    if (!p.inlier) continue;
-    const float dx = p.x - fit.ellipse.cx, dy = p.y - fit.ellipse.cy;
-    const float phi = std::atan2((-dx * si + dy * co) / fit.semi_b, (dx * co + dy * si) / fit.semi_a);
-    seen[static_cast<std::size_t>(std::clamp(static_cast<int>((phi + std::numbers::pi_v<float>) / (2 * std::numbers::pi_v<float>) * kCoverageBins), 0, kCoverageBins - 1))] = true;
-  }
+  for (const Point& p : work.points)
+    if (p.inlier) seen[static_cast<std::size_t>(turn_bin(fit, co, si, p))] = true;
   std::vector<Point>& refined = work.refined;
   refined.clear();
   for (int k = 0; k < kSteps; ++k) {
