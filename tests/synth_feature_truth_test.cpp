@@ -112,28 +112,5 @@ TEST(FeatureTruth, TheCircleIsWhereItsPaintIs) {
   EXPECT_GT(checked, 0) << "the frames must show a centre circle";
 }
 
-// An SSL robot's camera sees the far centre circle as paint 0.3-0.7 px wide: seen (an ellipse
-// there is no wrong one) but not counted among the circles to find, as junctions and edge
-// recall do not count paint under 1 px.
-TEST(FeatureTruth, ACircleOfSubPixelPaintNeedNotBeFound) {
-  SynthParams p;
-  p.field.scene = Scene::Ssl;
-  int thin = 0;
-  for (int i = 0; i < 40 && thin == 0; ++i) {
-    const GroundTruth truth = generate(p, 4242, i).truth;
-    const FeatureTruth t = feature_truth(truth);
-    if (!t.circle) continue;
-    EXPECT_LE(t.circle->legible_share, t.circle->visible_share);
-    if (t.circle->visible_share < 0.3f || t.circle->legible_share >= 0.3f) continue;
-    ++thin;
-    const FeatureScore none = score_features(t, FieldFeatures{});
-    EXPECT_EQ(none.circles, 0);
-    const FeatureScore on_it = score_features(t, as_detected(t));
-    EXPECT_EQ(on_it.ellipses, 1);
-    EXPECT_EQ(on_it.ellipses_wrong, 0);
-  }
-  EXPECT_GT(thin, 0) << "an SSL frame must show the circle in sub-pixel paint";
-}
-
 }  // namespace
 }  // namespace fieldlines::synth

@@ -52,8 +52,7 @@ options:
                      on, a second table scores them against the truth of the frames' field and
                      camera: intersections matched within 6 px (precision, recall, type correct
                      of matched) and the centre circle found on frames showing >= 30 % of it
-                     in paint >= 1 px wide (centre within 10 % of its radius; wrong: ellipses
-                     matching no circle),
+                     (centre within 10 % of its radius; wrong: ellipses matching no circle),
                      the field boundary (share of the columns showing carpet where it is within
                      4 px of the carpet's top) and the markings (share of the pixels along the
                      stripes' centre lines within half the line's width + 1 px of a line's centre)

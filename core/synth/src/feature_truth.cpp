@@ -20,7 +20,6 @@ constexpr double kArmPx = 12;          // an arm is visible when it reaches this
 constexpr double kSameArmCos = 0.9998;  // cos(~1 degree): the same arm of two lines
 constexpr double kStraightCos = -0.866;  // cos(150 degrees)
 constexpr int kCircleSamples = 720;
-constexpr float kMinVisibleWidthPx = 1;  // thinner paint does not count as seen
 
 struct WorldJunction {
   Vector2d at;
@@ -105,7 +104,7 @@ FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask) {
     Intersection i{.x = float(centre->x()), .y = float(centre->y()), .confidence = 1};
     float width = 0;
     const double off = nearest_paint(truth, i.x, i.y, "", width);
-    if (off > std::max(3.f, width) || width < kMinVisibleWidthPx) {  // hidden, or too thin to see
+    if (off > std::max(3.f, width) || width < 1) {  // hidden, or too thin to see
       out.ignored.push_back(i);
       continue;
     }
@@ -156,7 +155,7 @@ FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask) {
   for (const PaintedLine& line : field.lines) {
     if (!line.arc || line.sweep < 2 * std::numbers::pi - 1e-6) continue;
     std::vector<cv::Point2f> points;
-    int visible = 0, legible = 0;
+    int visible = 0;
     for (int n = 0; n < kCircleSamples; ++n) {
       const double s = line.length() * n / kCircleSamples;
       const Vector2d g = line.point(s);
@@ -164,14 +163,11 @@ FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask) {
       if (!p) return out;  // partly behind the camera: no ellipse in the image
       points.emplace_back(float(p->x()), float(p->y()));
       float width = 0;
-      if (inside(*p, k) && nearest_paint(truth, float(p->x()), float(p->y()), line.name, width) <= 2) {
-        ++visible;
-        legible += width >= kMinVisibleWidthPx;
-      }
+      if (inside(*p, k) && nearest_paint(truth, float(p->x()), float(p->y()), line.name, width) <= 2) ++visible;
     }
     const cv::RotatedRect r = cv::fitEllipse(points);
     out.circle = TruthCircle{{r.center.x, r.center.y, r.size.width, r.size.height, r.angle, 1},
-                             float(visible) / kCircleSamples, float(legible) / kCircleSamples};
+                             float(visible) / kCircleSamples};
   }
   return out;
 }
@@ -249,7 +245,7 @@ FeatureScore score_features(const FeatureTruth& truth, const FieldFeatures& dete
     return std::hypot(e.cx - t.cx, e.cy - t.cy) <= params.max_centre_error * radius;
   };
   for (const MarkingEllipse& e : detected.ellipses) s.ellipses_wrong += !found(e);
-  if (truth.circle && truth.circle->legible_share >= params.min_circle_share) {
+  if (truth.circle && truth.circle->visible_share >= params.min_circle_share) {
     s.circles = 1;
     s.circles_found = std::any_of(detected.ellipses.begin(), detected.ellipses.end(), found) ? 1 : 0;
   }

@@ -40,11 +40,7 @@ namespace fieldlines::synth {
 
 struct TruthCircle {
   MarkingEllipse ellipse;   // confidence 1
-  float visible_share = 0;  // of its centreline, in [0, 1]: in the frame and not hidden
-  // Of its centreline, painted at least 1 px wide in the frame: what the circle rate counts. A
-  // far circle's paint is sub-pixel (an SSL robot's camera sees 0.3-0.7 px), which junctions
-  // (`ignored`) and edge recall (eval's --min-width) do not count as visible either.
-  float legible_share = 0;
+  float visible_share = 0;  // of its centreline, in [0, 1]
 };
 
 struct FeatureTruth {
@@ -64,7 +60,7 @@ std::vector<float> carpet_top_rows(const GroundTruth& truth, const cv::Mat& mask
 
 struct FeatureScoreParams {
   float max_distance_px = 6;          // a detected junction matches a true one this close
-  float min_circle_share = 0.3f;      // circles at least this legible must be found...
+  float min_circle_share = 0.3f;      // circles at least this visible must be found...
   float max_centre_error = 0.1f;      // ...with the centre within this share of the radius
   float max_boundary_px = 4;          // a boundary column is right this close to the carpet's top
   float marking_margin_px = 1;        // a marking pixel is on its line within half its width + this
