@@ -62,67 +62,35 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   const int column_step = std::max(params.column_step, 1), row_step = std::max(params.row_step, 1);
   const int gap = std::max(params.min_gap_px, static_cast<int>(std::lround(params.gap_fraction * bgr8.rows)));
   const bool skip_ok = row_step <= gap;
-  // Each column is read bottom-up until the field ends above it. Columns of a frame stride
-  // across cache lines, so a block of columns is walked row by row instead (every row's lines
-  // shared by the block): the same samples and decisions as one column at a time.
-  struct Column {
+  int scanned = 0;
+  for (int x = column_step / 2; x < bgr8.cols; x += column_step) {
+    ++scanned;
     int top = -1, since_green = 0, paint = 0;
-    bool last_field = false;  // the sample below
-    bool skip = false;        // this sample was read (and was field) with the one below
-    bool done = false;
-  };
-  constexpr int kBlock = 64;
-  std::array<Column, kBlock> block;
-  const int first_row = bgr8.rows - 1 - row_step / 2;
-  const int scanned = bgr8.cols > column_step / 2 ? (bgr8.cols - 1 - column_step / 2) / column_step + 1 : 0;
-  for (int b0 = 0; b0 < scanned; b0 += kBlock) {
-    const int n = std::min(kBlock, scanned - b0);
-    std::fill_n(block.begin(), n, Column{});
-    int open = n;
-    for (int y = first_row; y >= 0 && open > 0; y -= row_step) {
-      const std::uint8_t* row = bgr8.ptr<std::uint8_t>(y);
-      const std::uint8_t* above = y - row_step >= 0 ? bgr8.ptr<std::uint8_t>(y - row_step) : nullptr;
-      // The gradient pass has pushed the frame out of the core's cache: the block's span of the
-      // row four samples up is fetched while this one is tested.
-      if (y - 4 * row_step >= 0) {
-        const std::uint8_t* ahead = bgr8.ptr<std::uint8_t>(y - 4 * row_step);
-        const int x0 = 3 * (column_step / 2 + b0 * column_step), x1 = 3 * (column_step / 2 + (b0 + n - 1) * column_step);
-        for (int o = x0; o <= x1 + 2; o += 64) __builtin_prefetch(ahead + o);
+    bool last_field = false;  // the sample below y
+    for (int y = bgr8.rows - 1 - row_step / 2; y >= 0; y -= row_step) {
+      // Between two field samples the one in the middle changes nothing (the upper one resets
+      // the counters, and one step cannot exceed the gap): inside the field, test every other
+      // sample, which halves this scan's reads of the frame.
+      if (last_field && skip_ok && y - row_step >= 0 &&
+          pixel.field(bgr8.ptr<std::uint8_t>(y - row_step) + 3 * x)) {
+        top = y -= row_step;
+        since_green = paint = 0;
+        continue;
       }
-      for (int i = 0; i < n; ++i) {
-        Column& c = block[static_cast<std::size_t>(i)];
-        if (c.done) continue;
-        if (c.skip) {
-          c.skip = false;
-          continue;
-        }
-        const int x = column_step / 2 + (b0 + i) * column_step;
-        // Between two field samples the one in the middle changes nothing (the upper one resets
-        // the counters, and one step cannot exceed the gap): inside the field, test every other
-        // sample, which halves this scan's tests.
-        if (c.last_field && skip_ok && above && pixel.field(above + 3 * x)) {
-          c.top = y - row_step;
-          c.since_green = c.paint = 0;
-          c.skip = true;
-          continue;
-        }
-        const std::uint8_t* p = row + 3 * x;
-        c.last_field = pixel.field(p);
-        if (c.last_field) {
-          c.top = y;
-          c.since_green = c.paint = 0;
-        } else if (c.top >= 0 && pixel.paint(p) && (c.paint += row_step) <= paint_cap) {
-          // A painted line, however wide near the camera, is part of the field: it neither
-          // ends the field nor raises its top.
-        } else if (c.top >= 0 && (c.since_green += row_step) > gap) {
-          c.done = true;  // the field ended above `top`; below the first field pixel (the
-          --open;         // robot's own body, a lens's dark corner) nothing ends it
-        }
+      const std::uint8_t* p = bgr8.ptr<std::uint8_t>(y) + 3 * x;
+      last_field = pixel.field(p);
+      if (last_field) {
+        top = y;
+        since_green = paint = 0;
+      } else if (top >= 0 && pixel.paint(p) && (paint += row_step) <= paint_cap) {
+        // A painted line, however wide near the camera, is part of the field: it neither
+        // ends the field nor raises its top.
+      } else if (top >= 0 && (since_green += row_step) > gap) {
+        break;  // the field ended above `top`; below the first field pixel (the robot's own
+                // body, a lens's dark corner) nothing ends it
       }
     }
-    for (int i = 0; i < n; ++i)
-      if (block[static_cast<std::size_t>(i)].top >= 0)
-        out.columns.push_back({float(column_step / 2 + (b0 + i) * column_step), float(block[static_cast<std::size_t>(i)].top)});
+    if (top >= 0) out.columns.push_back({float(x), float(top)});
   }
   if (out.columns.size() < std::max<std::size_t>(2, static_cast<std::size_t>(params.min_columns * scanned))) return;
   // Median of each column's top with its neighbours (a fixed window: no allocation). The

@@ -36,8 +36,7 @@ class FieldPixel {
     // The same value as the float sum of the three (exact either way): one conversion, not three.
     const float sum = float(bgr[0] + bgr[1] + bgr[2]);
     if (sum < p_.min_brightness * sum_ || sum > p_.max_brightness * sum_) return false;
-    // |R / sum - r| + |G / sum - g| <= tolerance, times sum (> 0): no division.
-    return std::abs(bgr[2] - r_ * sum) + std::abs(bgr[1] - g_ * sum) <= p_.chroma_tolerance * sum;
+    return std::abs(bgr[2] / sum - r_) + std::abs(bgr[1] / sum - g_) <= p_.chroma_tolerance;
   }
   bool paint(const std::uint8_t* bgr) const {
     const int sum = bgr[0] + bgr[1] + bgr[2];
