@@ -70,6 +70,20 @@ TEST(CentreCircle, ARoundCircleHalfOutOfTheFrame) {
   expect_ellipse(features(noisy(clean, 3)), centre, axes, 0);
 }
 
+// A circle whose centre lies beyond the frame's edge shows less than the 150 degrees of its turn
+// that a circle inside the frame must: 128 here, all of it drawn.
+TEST(CentreCircle, ACircleCutByTheFrameShowsLessOfItsTurn) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  const cv::Point2f centre(750, 250);
+  const cv::Size2f axes(500, 200);  // x < 640 where cos(t) < -0.44: 128 degrees of the turn
+  cv::ellipse(clean, cv::RotatedRect(centre, axes, 0), kPaint, 7, cv::LINE_AA);
+  const FieldFeatures f = features(noisy(clean, 5));
+  ASSERT_EQ(f.ellipses.size(), 1u);
+  const MarkingEllipse& e = f.ellipses[0];
+  EXPECT_LE(std::hypot(e.cx - centre.x, e.cy - centre.y), 0.1f * 0.5f * std::sqrt(axes.width * axes.height));
+  EXPECT_LT(e.confidence, 150.f / 360) << "its points cover less than a whole circle's minimum";
+}
+
 TEST(CentreCircle, StraightLinesAndCornersAreNoCircle) {
   cv::Mat clean(480, 640, CV_8UC3, kTurf);
   cv::line(clean, cv::Point(60, 100), cv::Point(590, 120), kPaint, 8);

@@ -19,6 +19,11 @@ constexpr int kMinChain = 3;
 constexpr int kSamplesPerPiece = 3;
 constexpr int kCoverageBins = 36;
 constexpr float kMinCoverage = 150.f / 360;  // less was a corner and a stray piece as often as a circle
+// Unless the frame cuts the ellipse: then this share of the turn inside the frame, and at least
+// kMinCutCoverage (a circle whose centre lies beyond the frame's edge shows less than 150
+// degrees of its turn).
+constexpr float kFrameCoverShare = 0.8f;
+constexpr float kMinCutCoverage = 120.f / 360;
 constexpr float kMinSemiAxisPx = 4;
 constexpr float kMaxAxisRatio = 12;  // a circle seen at 5 degrees above the turf
 constexpr float kMaxTangentSin = 0.342f;  // sin(20 degrees)
@@ -159,6 +164,26 @@ float coverage(const std::vector<Point>& points, const Fit& fit) {
   return static_cast<float>(std::count(seen.begin(), seen.end(), true)) / kCoverageBins;
 }
 
+// The share of the ellipse's turn (kCoverageBins round it, as coverage() counts) whose points
+// lie inside the frame; all of it when the frame is unknown (empty).
+float in_frame_share(const Fit& fit, cv::Size frame) {
+  if (frame.empty()) return 1;
+  const float co = std::cos(fit.theta), si = std::sin(fit.theta);
+  int inside = 0;
+  for (int b = 0; b < kCoverageBins; ++b) {
+    const float phi = (static_cast<float>(b) + 0.5f) / kCoverageBins * 2 * std::numbers::pi_v<float> - std::numbers::pi_v<float>;
+    const float u = fit.semi_a * std::cos(phi), v = fit.semi_b * std::sin(phi);
+    const float x = fit.ellipse.cx + u * co - v * si, y = fit.ellipse.cy + u * si + v * co;
+    inside += x >= 0 && y >= 0 && x < static_cast<float>(frame.width) && y < static_cast<float>(frame.height);
+  }
+  return static_cast<float>(inside) / kCoverageBins;
+}
+
+// The turn an ellipse's points must cover: kMinCoverage, less when the frame cuts the ellipse.
+float required_coverage(const Fit& fit, cv::Size frame) {
+  return std::max(kMinCutCoverage, std::min(kMinCoverage, kFrameCoverShare * in_frame_share(fit, frame)));
+}
+
 int root(std::vector<int>& parent, int i) {
   while (parent[static_cast<std::size_t>(i)] != i) {
     parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
@@ -180,7 +205,7 @@ void add_samples(const Marking& m, std::vector<Point>& points) {
 // Fits the points, then again without those far off the fit (a straight piece linked into the
 // chain pulls the first fit away: the cut starts loose and tightens over the rounds), and checks
 // that they lie on the ellipse; its coverage, or 0 when it is no circle's image.
-float fit_and_check(std::vector<Point>& points, float tolerance, Fit& fit) {
+float fit_and_check(std::vector<Point>& points, float tolerance, Fit& fit, cv::Size frame) {
   if (!fit_conic(points, fit)) return 0;
   for (const float cut : {6.f, 4.f, 2.f, 2.f}) {
     for (Point& p : points) p.inlier = distance(fit, p.x, p.y) <= cut * tolerance;
@@ -196,7 +221,7 @@ float fit_and_check(std::vector<Point>& points, float tolerance, Fit& fit) {
   // Most points on it (the median within the tolerance), and few far off.
   if (2 * close < static_cast<int>(points.size()) || 4 * inliers < 3 * static_cast<int>(points.size())) return 0;
   const float share = coverage(points, fit);
-  return share >= kMinCoverage ? share : 0;
+  return share >= required_coverage(fit, frame) ? share : 0;
 }
 
 // Whether piece `m` lies along the fitted ellipse: its samples within twice the tolerance and
@@ -232,7 +257,7 @@ int gather_support(std::span<const Marking> pieces, const Fit& fit, float tolera
 // support covers. A circle cut into pieces that do not chain (a flat ellipse, a far circle, one
 // drawn in faint paint) is found from any two of its pieces. Returns the best ellipse's share
 // (0: none) and leaves its pieces in `work.support`.
-float fit_from_pairs(std::span<const Marking> pieces, CircleWorkspace& work, Fit& best) {
+float fit_from_pairs(std::span<const Marking> pieces, CircleWorkspace& work, Fit& best, cv::Size frame) {
   const std::size_t n = pieces.size();
   work.order.resize(n);
   for (std::size_t i = 0; i < n; ++i) work.order[i] = static_cast<int>(i);
@@ -285,7 +310,7 @@ float fit_from_pairs(std::span<const Marking> pieces, CircleWorkspace& work, Fit
   for (int round = 0; round < 2; ++round) {
     if (gather_support(pieces, best, tolerance, n, work) < kMinSupport) return 0;
     Fit refined;
-    share = fit_and_check(work.points, tolerance, refined);
+    share = fit_and_check(work.points, tolerance, refined, frame);
     if (share <= 0) return 0;
     best = refined;
   }
@@ -360,6 +385,7 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
                         const cv::Mat& bgr) {
   out.clear();
   const std::size_t n = pieces.size();
+  const cv::Size frame = bgr.empty() ? cv::Size() : bgr.size();
 
   work.on_ellipse.assign(n, 0);
   work.parent.resize(n);
@@ -410,7 +436,7 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
       add_chain(static_cast<int>(r));
       if (!alone) add_chain(static_cast<int>(q));
       Fit fit;
-      const float share = fit_and_check(work.points, tolerance_of(static_cast<int>(r)), fit);
+      const float share = fit_and_check(work.points, tolerance_of(static_cast<int>(r)), fit, frame);
       if (share > best_share) best_share = share, best_chain = static_cast<int>(r), best_partner = alone ? -1 : static_cast<int>(q);
     }
   }
@@ -426,7 +452,7 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
       const int chain = root(work.parent, static_cast<int>(i));
       if (chain == best_chain || chain == best_partner) add_samples(pieces[i], work.points), work.on_ellipse[i] = 1;
     }
-    share = fit_and_check(work.points, tolerance, fit);
+    share = fit_and_check(work.points, tolerance, fit, frame);
     for (std::size_t r = 0; share > 0 && r < n; ++r) {
       if (static_cast<int>(r) == best_chain || static_cast<int>(r) == best_partner || work.chain_size[r] == 0) continue;
       const std::size_t before = work.points.size();
@@ -434,7 +460,7 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
         if (root(work.parent, static_cast<int>(i)) == static_cast<int>(r)) add_samples(pieces[i], work.points);
       for (Point& p : work.points) p.inlier = 1;
       Fit joined;
-      const float joined_share = fit_and_check(work.points, tolerance, joined);
+      const float joined_share = fit_and_check(work.points, tolerance, joined, frame);
       if (joined_share > share) {
         fit = joined, share = joined_share;
         for (std::size_t i = 0; i < n; ++i)
@@ -446,7 +472,7 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
   }
   // The pairs' ellipse when it covers more of the turn than the chains'.
   Fit paired;
-  const float paired_share = fit_from_pairs(pieces, work, paired);
+  const float paired_share = fit_from_pairs(pieces, work, paired, frame);
   if (paired_share > share) {
     fit = paired, share = paired_share;
     work.on_ellipse = work.support;

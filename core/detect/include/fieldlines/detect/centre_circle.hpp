@@ -17,7 +17,8 @@
 // least 4 px, at most 12:1), its points lie on it (the median Sampson distance at most half the
 // line width, at least 2.5 px: a piece is a chord, its middle inside the curve; three quarters
 // within twice that), and they cover at least 150 degrees of it (seen from its centre, in its own
-// axes; a piece covers the turn between its samples). The best seed wins; every other chain
+// axes; a piece covers the turn between its samples), or, when the frame cuts the ellipse (its
+// centre beyond the frame's edge), 80 % of the turn inside the frame and at least 120 degrees. The best seed wins; every other chain
 // joins it when the fit of both still passes and covers more of the turn (the circle cut by the
 // halfway line or a robot is several chains).
 //
