@@ -195,6 +195,33 @@ TEST(Overlay, FieldFeaturesInTheirColour) {
 
   FieldFeatures bad;
   const float nan = std::numeric_limits<float>::quiet_NaN();
+  bad.field_boundary.points = {{0, 200}, {319, 205}};  // far below the legend
+  {
+    // The field boundary is dashed, and so is its legend's swatch: two equal runs of its colour
+    // with a gap, then the text (a solid swatch is one run far longer than the first letter's).
+    OverlayParams legend_only;
+    legend_only.thickness = 2;
+    cv::Mat boundary = turf.clone();
+    FieldFeatures only_boundary;
+    only_boundary.field_boundary = bad.field_boundary;
+    draw_field_features(boundary, only_boundary, legend_only);
+    const cv::Mat legend = boundary(cv::Rect(160, 0, 160, 60));
+    cv::Mat hit;
+    const cv::Scalar blue = bgr(palette::kFieldBoundary);
+    cv::inRange(legend, blue - cv::Scalar::all(40), blue + cv::Scalar::all(40), hit);
+    std::vector<int> runs;  // lengths of the runs of columns holding the colour, left to right
+    bool in_run = false;
+    for (int x = 0; x < hit.cols; ++x) {
+      const bool any = cv::countNonZero(hit.col(x)) > 0;
+      if (any && !in_run) runs.push_back(0);
+      if (any) ++runs.back();
+      in_run = any;
+    }
+    ASSERT_GE(runs.size(), 3u);
+    EXPECT_GE(runs[0], 4);
+    EXPECT_NEAR(runs[0], runs[1], 1);
+  }
+  bad.field_boundary.points.clear();
   bad.markings.push_back({nan, 0, 10, 10, 1});
   bad.ellipses.push_back({nan, 0, 10, 10, 0, 1});
   bad.ellipses.push_back({10, 10, 0, -5, 0, 1});

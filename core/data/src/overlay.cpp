@@ -37,6 +37,7 @@ void draw_segment(cv::Mat& canvas, const Segment& s, const cv::Scalar& colour, i
 struct LegendEntry {
   cv::Scalar colour;
   std::string text;
+  bool dashed = false;  // drawn as the field boundary is: two dashes with a gap
 };
 
 // A darkened box of colour swatches and their text in the top-left or top-right corner, so it
@@ -63,11 +64,15 @@ void draw_legend(cv::Mat& canvas, std::span<const LegendEntry> entries, bool rig
     const int y = box.y + pad + static_cast<int>(i) * row + glyph.height;
     const int mid = y - glyph.height / 2;
     const int swatch_width = std::max(2, text_thickness + 1);
-    if (p.outline_px > 0) {
-      cv::line(canvas, {box.x + pad, mid}, {box.x + pad + swatch, mid}, p.outline_colour,
-               swatch_width + 2 * p.outline_px, cv::LINE_AA);
+    // Solid, or two dashes of two fifths with a fifth between them.
+    const int x0 = box.x + pad, x1 = x0 + swatch, dash = 2 * swatch / 5;
+    for (const auto& [from, to] : entries[i].dashed ? std::array{std::pair{x0, x0 + dash}, std::pair{x1 - dash, x1}}
+                                                    : std::array{std::pair{x0, x1}, std::pair{x1, x1}}) {
+      if (to <= from) continue;
+      if (p.outline_px > 0)
+        cv::line(canvas, {from, mid}, {to, mid}, p.outline_colour, swatch_width + 2 * p.outline_px, cv::LINE_AA);
+      cv::line(canvas, {from, mid}, {to, mid}, entries[i].colour, swatch_width, cv::LINE_AA);
     }
-    cv::line(canvas, {box.x + pad, mid}, {box.x + pad + swatch, mid}, entries[i].colour, swatch_width, cv::LINE_AA);
     cv::putText(canvas, entries[i].text, {box.x + 2 * pad + swatch, y}, font, scale, {255, 255, 255}, text_thickness,
                 cv::LINE_AA);
   }
@@ -95,7 +100,7 @@ void draw_feature_legend(cv::Mat& canvas, const FieldFeatures& f, const OverlayP
   if (!f.markings.empty()) entries[n++] = {feature, "stripes " + std::to_string(f.markings.size())};
   if (!f.intersections.empty()) entries[n++] = {feature, "junctions " + std::to_string(f.intersections.size())};
   if (!f.ellipses.empty()) entries[n++] = {feature, "centre circle"};
-  if (!f.field_boundary.points.empty()) entries[n++] = {bgr(palette::kFieldBoundary), "field boundary"};
+  if (!f.field_boundary.points.empty()) entries[n++] = {bgr(palette::kFieldBoundary), "field boundary", true};
   draw_legend(canvas, std::span(entries.data(), n), true, p);
 }
 
