@@ -12,6 +12,7 @@
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/light.hpp"
 #include "fieldlines/detect/stripes.hpp"
+#include "fieldlines/synth/synth.hpp"
 
 namespace fieldlines {
 namespace {
@@ -218,6 +219,37 @@ TEST(Stripes, AThinLineBlendedIntoPaleTurfIsAStripeOnlyWhenThinLinesAreAccepted)
   EXPECT_EQ(stripes(thin, ThinLines::Refused), 0);
   const cv::Mat brighter_turf = frame_with_row(pale_turf * 1.2);
   EXPECT_EQ(stripes(brighter_turf, ThinLines::Accepted), 0) << "brighter turf keeps the turf's colour";
+}
+
+// The studio's one pass (run_with_thin_lines) flags what a run with thin lines refused and one
+// with them accepted flag, on every segment of synthetic frames of both scenes in every light
+// (the SSL field's far lines are thinner than a pixel).
+TEST(Stripes, OnePassFlagsWhatTheTwoRunsFlag) {
+  int thin_only = 0, stripes = 0;
+  for (const synth::Scene scene : {synth::Scene::Ssl, synth::Scene::Kid}) {
+    synth::SynthParams p;
+    p.field.scene = scene;
+    p.conditions = {synth::Condition::Artificial, synth::Condition::Natural, synth::Condition::Mixed,
+                    synth::Condition::Dim, synth::Condition::Shadows};
+    for (int i = 0; i < 10; ++i) {
+      const synth::SynthSample sample = synth::generate(p, 11, i);
+      std::vector<Segment> segments;
+      LineDetector(DetectorParams{}).detect(sample.bgr, segments);
+      const std::optional<Rgb> field = estimate_field_colour(sample.bgr);
+      StripeCheck refused, accepted, both;
+      ASSERT_EQ(refused.run(sample.bgr, field, segments, stripes_on(), ThinLines::Refused), field.has_value());
+      accepted.run(sample.bgr, field, segments, stripes_on(), ThinLines::Accepted);
+      ASSERT_EQ(both.run_with_thin_lines(sample.bgr, field, segments, stripes_on()), field.has_value());
+      EXPECT_EQ(both.flags(), refused.flags()) << i;
+      EXPECT_EQ(both.thin_flags(), accepted.flags()) << i;
+      for (std::size_t k = 0; k < refused.flags().size(); ++k) {
+        stripes += refused.flags()[k];
+        thin_only += accepted.flags()[k] && !refused.flags()[k];
+      }
+    }
+  }
+  EXPECT_GT(stripes, 20);
+  EXPECT_GT(thin_only, 0) << "the frames must hold lines that only thin lines accepted take";
 }
 
 TEST(Stripes, OtherLabelsAreLeftAlone) {

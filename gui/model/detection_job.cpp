@@ -13,17 +13,16 @@ namespace fieldlines::studio {
 namespace {
 
 // The stripes check on every segment, not only on those the detector's thresholds call markings,
-// as the detector runs it and again with thin lines accepted.
+// as the detector runs it and, in the same pass, with thin lines accepted.
 std::vector<StripeVerdict> verdicts(StripeCheck& check, const cv::Mat& image, const std::optional<Rgb>& field,
                                     std::span<const Segment> segments, const DetectorParams& params) {
-  if (!check.run(image, field, segments, params))
+  if (!check.run_with_thin_lines(image, field, segments, params))
     return std::vector<StripeVerdict>(segments.size(), StripeVerdict::Unchecked);
   std::vector<StripeVerdict> out;
   out.reserve(segments.size());
-  for (const std::uint8_t stripe : check.flags()) out.push_back(stripe ? StripeVerdict::Stripe : StripeVerdict::NotStripe);
-  check.run(image, field, segments, params, ThinLines::Accepted);
-  for (std::size_t i = 0; i < out.size(); ++i)
-    if (out[i] == StripeVerdict::NotStripe && check.flags()[i]) out[i] = StripeVerdict::ThinLine;
+  for (std::size_t i = 0; i < segments.size(); ++i)
+    out.push_back(check.flags()[i] ? StripeVerdict::Stripe
+                                   : (check.thin_flags()[i] ? StripeVerdict::ThinLine : StripeVerdict::NotStripe));
   return out;
 }
 

@@ -29,6 +29,7 @@ enum class Verdict { Stripe, No, Cut };
 struct Profile {
   Verdict verdict = Verdict::No;
   float width = 0, offset = 0;
+  bool thin = false;  // a stripe only as paint too thin to leave the field colour (ThinLines)
 };
 
 float brightness(const std::uint8_t* p) { return float(p[0] + p[1] + p[2]); }  // exact: one conversion
@@ -135,7 +136,7 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
   const float near_edge = crossing(b, lo - 1, level), far_edge = crossing(b, hi, level);
   const float width = far_edge - near_edge;
   if (width < kMinWidthPx || width > max_width) return {};
-  return {Verdict::Stripe, width, 0.5f * (near_edge + far_edge) - float(back)};
+  return {Verdict::Stripe, width, 0.5f * (near_edge + far_edge) - float(back), static_cast<bool>(turf[peak])};
 }
 
 float median(std::array<float, 32>& v, int n) {
@@ -166,9 +167,13 @@ std::pair<float, float> offset_line(const std::array<float, 32>& f, const std::a
   return {at0, at0 + slope};
 }
 
-// The candidate's paint side, profiles and medians; false when it is no stripe.
+// The candidate's paint side, profiles and medians under `thin`; false when it is no stripe.
+// `refused`, when given (with ThinLines::Accepted), gets the candidate as ThinLines::Refused
+// would measure it from the same profiles (those taken only as thin paint left out), and
+// `*refused_stripe` whether it is a stripe then.
 bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segment& s, const DetectorParams& params,
-                       ThinLines thin, StripeWorkspace& work, Candidate& c) {
+                       ThinLines thin, StripeWorkspace& work, Candidate& c, Candidate* refused = nullptr,
+                       bool* refused_stripe = nullptr) {
   const float dx = s.x1 - s.x0, dy = s.y1 - s.y0, len = std::hypot(dx, dy);
   if (!(len > 0.f)) return false;
   c.ux = dx / len, c.uy = dy / len;
@@ -189,25 +194,35 @@ bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segmen
   c.sx = nx, c.sy = ny;
   const int samples = std::clamp(params.stripe_samples, 1, 32);
   const float bottom_width = static_cast<float>(params.stripe_max_width) * float(bgr.rows);
-  std::array<float, 32> widths{}, offsets{}, at{};
-  int stripes = 0, decided = 0;
+  // Index 0: the profiles `thin` takes; 1: those ThinLines::Refused takes.
+  std::array<std::array<float, 32>, 2> widths{}, offsets{}, at{};
+  std::array<int, 2> stripes{};
+  int decided = 0;
   for (int k = 0; k < samples; ++k) {
     const float f = (float(k) + 0.5f) / float(samples);
     const float px = s.x0 + f * dx, py = s.y0 + f * dy;
     const float max_width = bottom_width * std::max(kTopWidthShare, py / float(bgr.rows));
     const Profile p = measure_profile(bgr, pixel, px, py, nx, ny, max_width, thin, work);
-    decided += p.verdict != Verdict::Cut;
-    if (p.verdict == Verdict::Stripe) {
-      widths[static_cast<std::size_t>(stripes)] = p.width;
-      offsets[static_cast<std::size_t>(stripes)] = p.offset;
-      at[static_cast<std::size_t>(stripes)] = f;
-      ++stripes;
+    decided += p.verdict != Verdict::Cut;  // a thin profile that Refused would not take is a No: decided
+    if (p.verdict != Verdict::Stripe) continue;
+    for (std::size_t m = 0; m < (p.thin ? 1u : 2u); ++m) {
+      const auto i = static_cast<std::size_t>(stripes[m]++);
+      widths[m][i] = p.width, offsets[m][i] = p.offset, at[m][i] = f;
     }
   }
-  if (2 * stripes < decided || stripes == 0) return false;
-  c.width = median(widths, stripes);
-  std::tie(c.offset0, c.offset1) = offset_line(at, offsets, stripes, widths);  // widths: scratch now
-  return true;
+  // The medians and the centre line of one set of profiles; false when they make no stripe.
+  const auto finish = [&](std::size_t m, Candidate& out) {
+    const int n = stripes[m];
+    if (2 * n < decided || n == 0) return false;
+    out.width = median(widths[m], n);
+    std::tie(out.offset0, out.offset1) = offset_line(at[m], offsets[m], n, widths[m]);  // widths: scratch now
+    return true;
+  };
+  if (refused) {
+    *refused = c;
+    *refused_stripe = finish(1, *refused);
+  }
+  return finish(0, c);
 }
 
 Marking centre_of(const Segment& s, const Candidate& c) {
@@ -249,27 +264,15 @@ Marking merge(const Segment& a, const Candidate& ca, const Segment& b, const Can
   return {p.x, p.y, q.x, q.y, 0.5f * (ca.width + cb.width)};
 }
 
-}  // namespace
-
-void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<Segment> segments,
-                  const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out, ThinLines thin) {
+// The stripes among `cs` (measured candidates of `segments`) paired with their twins into `out`
+// (cleared first); relabels the segments.
+void pair_stripes(std::span<Segment> segments, std::vector<Candidate>& cs, const DetectorParams& params,
+                  std::vector<Marking>& out) {
   out.clear();
-  work.candidates.clear();
-  const bool readable = !bgr8.empty() && bgr8.type() == CV_8UC3 && field;
-  if (readable) {
-    const FieldPixel pixel(*field, FieldBoundaryParams{});
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-      if (segments[i].label != Label::Marking) continue;
-      Candidate c;
-      c.segment = i;
-      if (measure_candidate(bgr8, pixel, segments[i], params, thin, work, c)) work.candidates.push_back(c);
-    }
-  }
   // Every marking that is not a stripe, and every stripe left without its twin when twins are
   // required, becomes none below; the rest are set back to Marking.
   for (Segment& s : segments)
     if (s.label == Label::Marking) s.label = Label::None;
-  std::vector<Candidate>& cs = work.candidates;
   for (std::size_t i = 0; i < cs.size(); ++i) {
     if (cs[i].paired) continue;
     const Segment& a = segments[cs[i].segment];
@@ -297,6 +300,23 @@ void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::spa
   }
 }
 
+}  // namespace
+
+void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<Segment> segments,
+                  const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out, ThinLines thin) {
+  work.candidates.clear();
+  if (!bgr8.empty() && bgr8.type() == CV_8UC3 && field) {
+    const FieldPixel pixel(*field, FieldBoundaryParams{});
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      if (segments[i].label != Label::Marking) continue;
+      Candidate c;
+      c.segment = i;
+      if (measure_candidate(bgr8, pixel, segments[i], params, thin, work, c)) work.candidates.push_back(c);
+    }
+  }
+  pair_stripes(segments, work.candidates, params, out);
+}
+
 bool StripeCheck::run(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<const Segment> segments,
                       const DetectorParams& params, ThinLines thin) {
   flags_.clear();
@@ -305,6 +325,35 @@ bool StripeCheck::run(const cv::Mat& bgr8, const std::optional<Rgb>& field, std:
   for (Segment& s : checked_) s.label = Label::Marking;
   find_stripes(bgr8, field, checked_, params, work_, stripes_, thin);
   for (const Segment& s : checked_) flags_.push_back(s.label == Label::Marking);
+  return true;
+}
+
+bool StripeCheck::run_with_thin_lines(const cv::Mat& bgr8, const std::optional<Rgb>& field,
+                                      std::span<const Segment> segments, const DetectorParams& params) {
+  flags_.clear();
+  thin_flags_.clear();
+  if (!field || bgr8.type() != CV_8UC3) return false;
+  checked_.assign(segments.begin(), segments.end());
+  // One set of profiles per segment, measured as ThinLines::Accepted; the candidates Refused
+  // would measure from them beside.
+  work_.candidates.clear();
+  refused_.clear();
+  const FieldPixel pixel(*field, FieldBoundaryParams{});
+  for (std::size_t i = 0; i < checked_.size(); ++i) {
+    Candidate c, r;
+    c.segment = i;
+    bool refused_stripe = false;
+    if (measure_candidate(bgr8, pixel, checked_[i], params, ThinLines::Accepted, work_, c, &r, &refused_stripe))
+      work_.candidates.push_back(c);
+    if (refused_stripe) refused_.push_back(r);
+  }
+  const auto flags_of = [&](std::vector<Candidate>& cs, std::vector<std::uint8_t>& flags) {
+    for (Segment& s : checked_) s.label = Label::Marking;
+    pair_stripes(checked_, cs, params, stripes_);
+    for (const Segment& s : checked_) flags.push_back(s.label == Label::Marking);
+  };
+  flags_of(refused_, flags_);
+  flags_of(work_.candidates, thin_flags_);
   return true;
 }
 
