@@ -8,6 +8,8 @@
 #include "cli_test_support.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/field_boundary.hpp"
+#include "fieldlines/detect/light.hpp"
+#include "fieldlines/synth/synth.hpp"
 
 namespace fl = fieldlines;
 
@@ -34,6 +36,50 @@ TEST(FieldBoundary, FollowsTheTopOfTheGreenPastRobotsAndWideLines) {
   ASSERT_FALSE(b.empty());
   for (float x = 0; x < 640; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
   EXPECT_EQ(b.image_height, 480);
+}
+
+// Skipping the samples between two field samples (max_jump) finds the tops that testing every
+// sample finds: on synthetic fields in every light and on random clutter (turf, paint, dark and
+// grey blocks, lines of every width, noise).
+TEST(FieldBoundary, SkippingInsideTheFieldFindsTheSameTops) {
+  std::vector<cv::Mat> frames;
+  fl::synth::SynthParams p;
+  p.conditions = {fl::synth::Condition::Natural, fl::synth::Condition::Shadows, fl::synth::Condition::Dim};
+  for (const fl::synth::Scene scene : {fl::synth::Scene::Ssl, fl::synth::Scene::Kid}) {
+    p.field.scene = scene;
+    for (int i = 0; i < 6; ++i) frames.push_back(fl::synth::generate(p, 5, i).bgr);
+  }
+  cv::RNG rng(3);
+  const cv::Scalar colours[] = {{50, 140, 40}, {250, 250, 250}, {15, 15, 15}, {120, 120, 120}, {60, 170, 50}};
+  for (int i = 0; i < 12; ++i) {
+    cv::Mat img(rng.uniform(40, 300), rng.uniform(40, 400), CV_8UC3, colours[0]);
+    for (int k = 0; k < 12; ++k) {
+      const cv::Point a(rng.uniform(0, img.cols), rng.uniform(0, img.rows)), b(rng.uniform(0, img.cols), rng.uniform(0, img.rows));
+      const cv::Scalar& c = colours[rng.uniform(0, 5)];
+      if (k % 2) cv::rectangle(img, a, b, c, cv::FILLED);
+      else cv::line(img, a, b, c, rng.uniform(1, 30));
+    }
+    cv::Mat noise(img.size(), CV_8UC3);
+    rng.fill(noise, cv::RNG::UNIFORM, 0, 12);
+    frames.push_back(img + noise);
+  }
+  int compared = 0;
+  for (const cv::Mat& frame : frames) {
+    const auto field = fl::estimate_field_colour(frame);
+    if (!field) continue;
+    fl::FieldBoundaryParams every;
+    every.max_jump = 0;
+    fl::FieldBoundary fast, slow;
+    fl::find_field_boundary(frame, *field, fast);
+    fl::find_field_boundary(frame, *field, slow, every);
+    ASSERT_EQ(fast.columns.size(), slow.columns.size());
+    for (std::size_t i = 0; i < fast.columns.size(); ++i) {
+      EXPECT_EQ(fast.columns[i].x, slow.columns[i].x);
+      EXPECT_EQ(fast.columns[i].y, slow.columns[i].y) << "column " << fast.columns[i].x;
+    }
+    compared += !slow.columns.empty();
+  }
+  EXPECT_GE(compared, 20);
 }
 
 TEST(FieldBoundary, EmptyWithoutAField) {

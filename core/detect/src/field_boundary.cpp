@@ -65,8 +65,7 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   // upper one resets the counters, and a run shorter than the gap ends nothing. So inside the
   // field the sample up to `jump` steps up is tested first, and those between are skipped when
   // it is field: a few reads per column instead of one per step, and the same tops.
-  constexpr int kMaxJump = 8;
-  const int jump = std::min(kMaxJump, gap / row_step);
+  const int jump = std::clamp(gap / row_step, 0, std::max(params.max_jump, 0));
   int scanned = 0;
   for (int x = column_step / 2; x < bgr8.cols; x += column_step) {
     ++scanned;
