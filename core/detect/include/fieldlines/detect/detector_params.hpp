@@ -41,7 +41,7 @@ struct DetectorParams {
   // L, T and X junctions of the stripes' centre lines (intersections.hpp). Off by default like
   // the stripes; on, it runs the stripes stage too (its input).
   bool intersections = false;
-  double intersection_min_angle = 15;  // far corners look this acute in perspective
+  double intersection_min_angle = 10;  // far corners look this acute in perspective
   double intersection_reach = 1.5;
   // The centre circle from short stripe pieces (centre_circle.hpp); off by default. On, or with
   // intersections on, the frame is drawn a second time for pieces from piece_length px.
