@@ -205,7 +205,8 @@ bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segmen
     const Profile p = measure_profile(bgr, pixel, px, py, nx, ny, max_width, thin, work);
     decided += p.verdict != Verdict::Cut;  // a thin profile that Refused would not take is a No: decided
     if (p.verdict != Verdict::Stripe) continue;
-    for (std::size_t m = 0; m < (p.thin ? 1u : 2u); ++m) {
+    // Set 1 only when asked for: the detector's own pass keeps one set.
+    for (std::size_t m = 0; m < (refused && !p.thin ? 2u : 1u); ++m) {
       const auto i = static_cast<std::size_t>(stripes[m]++);
       widths[m][i] = p.width, offsets[m][i] = p.offset, at[m][i] = f;
     }
