@@ -164,6 +164,13 @@ float coverage(const std::vector<Point>& points, const Fit& fit) {
   return static_cast<float>(std::count(seen.begin(), seen.end(), true)) / kCoverageBins;
 }
 
+// The point of the ellipse at `phi` round its centre in its own axes (turn_bin()'s angle); co, si
+// as there.
+cv::Point2f point_at(const Fit& fit, float co, float si, float phi) {
+  const float u = fit.semi_a * std::cos(phi), v = fit.semi_b * std::sin(phi);
+  return {fit.ellipse.cx + u * co - v * si, fit.ellipse.cy + u * si + v * co};
+}
+
 // The share of the ellipse's turn (kCoverageBins round it, as coverage() counts) whose points
 // lie inside the frame; all of it when the frame is unknown (empty).
 float in_frame_share(const Fit& fit, cv::Size frame) {
@@ -172,9 +179,8 @@ float in_frame_share(const Fit& fit, cv::Size frame) {
   int inside = 0;
   for (int b = 0; b < kCoverageBins; ++b) {
     const float phi = (static_cast<float>(b) + 0.5f) / kCoverageBins * 2 * std::numbers::pi_v<float> - std::numbers::pi_v<float>;
-    const float u = fit.semi_a * std::cos(phi), v = fit.semi_b * std::sin(phi);
-    const float x = fit.ellipse.cx + u * co - v * si, y = fit.ellipse.cy + u * si + v * co;
-    inside += x >= 0 && y >= 0 && x < static_cast<float>(frame.width) && y < static_cast<float>(frame.height);
+    const cv::Point2f q = point_at(fit, co, si, phi);
+    inside += q.x >= 0 && q.y >= 0 && q.x < static_cast<float>(frame.width) && q.y < static_cast<float>(frame.height);
   }
   return static_cast<float>(inside) / kCoverageBins;
 }
@@ -338,11 +344,10 @@ void refine_on_paint(const cv::Mat& bgr, float tolerance, CircleWorkspace& work,
   for (int k = 0; k < kSteps; ++k) {
     const float phi = -std::numbers::pi_v<float> + (static_cast<float>(k) + 0.5f) * 2 * std::numbers::pi_v<float> / kSteps;
     if (!seen[static_cast<std::size_t>(k * kCoverageBins / kSteps)]) continue;
-    const float ex = fit.semi_a * std::cos(phi), ey = fit.semi_b * std::sin(phi);
-    const float x = fit.ellipse.cx + ex * co - ey * si, y = fit.ellipse.cy + ex * si + ey * co;
+    const auto [x, y] = point_at(fit, co, si, phi);
     if (!(std::abs(x) < 1e6f && std::abs(y) < 1e6f)) continue;  // far off any frame (or NaN)
     // The normal: the implicit function's gradient, in the ellipse's axes turned back.
-    const float gx = ex / (fit.semi_a * fit.semi_a), gy = ey / (fit.semi_b * fit.semi_b);
+    const float gx = std::cos(phi) / fit.semi_a, gy = std::sin(phi) / fit.semi_b;
     float nx = gx * co - gy * si, ny = gx * si + gy * co;
     const float n = std::hypot(nx, ny);
     if (!(n > 0)) continue;
