@@ -204,14 +204,16 @@ int main(int argc, char** argv) {
   const auto row = [&](const std::string& name) -> const peers::DetectorTimes& {
     return *std::find_if(times.begin(), times.end(), [&](const auto& t) { return t.name == name; });
   };
-  std::printf("\nms per image (CPU time, median over %zu repetition(s)) and fieldlines / this (lower is better for us;\n"
-              "per repetition, the median over them; worse: the larger order, [min-max over repetitions, order]):\n",
+  std::printf("\nms per image (CPU time, mean over the calls of %zu repetition(s)) and fieldlines / this (lower is\n"
+              "better for us; per repetition, summed times; the median over them; worse: the larger order,\n"
+              "[min-max over repetitions, order]):\n",
               times.front().ms[0].size());
   std::printf("  %-11s %9s %11s %7s %8s  %s\n", "detector", "block ms", "interl. ms", "block", "interl.", "worse");
   for (const auto& t : times) {
     const peers::RatioSummary r = peers::ratio_in_both_orders(times.front(), t);
-    std::printf("  %-11s %9.3f %11.3f %7.2f %8.2f  %s\n", t.name.c_str(), peers::quantile(t.pooled(peers::Order::Block), 0.5),
-                peers::quantile(t.pooled(peers::Order::Interleaved), 0.5), r.by_order[0], r.by_order[1],
+    const auto mean = [](const std::vector<double>& ms) { return ms.empty() ? 0 : peers::total(ms) / static_cast<double>(ms.size()); };
+    std::printf("  %-11s %9.3f %11.3f %7.2f %8.2f  %s\n", t.name.c_str(), mean(t.pooled(peers::Order::Block)),
+                mean(t.pooled(peers::Order::Interleaved)), r.by_order[0], r.by_order[1],
                 worse_text(r).c_str());
   }
   const peers::RatioSummary vs_edlines = peers::ratio_in_both_orders(times.front(), row("edlines"));

@@ -112,13 +112,15 @@ double quantile(std::vector<double> v, double q) {
   return v[lo] + (pos - static_cast<double>(lo)) * (v[hi] - v[lo]);
 }
 
+double total(const std::vector<double>& ms) { return std::accumulate(ms.begin(), ms.end(), 0.0); }
+
 RatioSummary ratio_in_both_orders(const DetectorTimes& a, const DetectorTimes& b) {
   RatioSummary s;
   std::vector<double> per_round[2];
   for (const Order order : kOrders) {
     const int o = static_cast<int>(order);
     for (std::size_t r = 0; r < a.ms[o].size(); ++r)
-      per_round[o].push_back(quantile(a.ms[o][r], 0.5) / quantile(b.ms[o][r], 0.5));
+      per_round[o].push_back(total(a.ms[o][r]) / total(b.ms[o][r]));
     s.by_order[o] = quantile(per_round[o], 0.5);
   }
   s.worse_order = s.by_order[1] > s.by_order[0] ? Order::Interleaved : Order::Block;

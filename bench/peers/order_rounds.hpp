@@ -9,8 +9,11 @@
 //                first, so its buffers are warm), detectors in a random order;
 //   interleaved  image by image, every detector once per image, in a random order per image.
 // Each round runs the two orders in a random order (seeded), so slow drift of the machine's
-// load hits both alike. A ratio a/b is taken per round and per order (median call of a over
-// median call of b, both timed in that round), then summarised over rounds.
+// load hits both alike. A ratio a/b is taken per round and per order (a's time over b's, each
+// summed over all its calls of that round, on the same images), then summarised over rounds.
+// Summed, not the median call: over frames of unequal cost (a busy 800x600 frame beside a plain
+// 640x360 one) the median call is one frame's, and a stage whose cost lies in the busy frames
+// (the field features: 1.6x by medians, 2.9x in total on the Humanoid frames) would hide there.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -68,7 +71,10 @@ std::vector<std::size_t> random_order(std::size_t n, std::mt19937_64& rng);
 // Linear interpolation between closest ranks (the usual "type 7" quantile); v not empty.
 double quantile(std::vector<double> v, double q);
 
-// a/b in each order: the median over rounds of (median call of a) / (median call of b) in the
+// The sum of `ms`: a round's total time.
+double total(const std::vector<double>& ms);
+
+// a/b in each order: the median over rounds of (a's total time) / (b's total time) in the
 // round. `worse` is the larger of the two (the one less flattering to a), `min`/`max` its
 // spread over rounds.
 struct RatioSummary {
