@@ -51,8 +51,8 @@ float distance(const Fit& fit, float x, float y) {
   const double u = (x - fit.mx) / fit.s, v = (y - fit.my) / fit.s;
   const double q = fit.a * u * u + fit.b * u * v + fit.c * v * v + fit.d * u + fit.e * v + fit.f;
   const double gu = 2 * fit.a * u + fit.b * v + fit.d, gv = fit.b * u + 2 * fit.c * v + fit.e;
-  const double g = std::hypot(gu, gv);
-  return g > 0 ? static_cast<float>(std::abs(q) / g * fit.s) : 1e9f;
+  const double g2 = gu * gu + gv * gv;  // normalised coordinates: no overflow for hypot() to guard
+  return g2 > 0 ? static_cast<float>(std::abs(q) / std::sqrt(g2) * fit.s) : 1e9f;
 }
 
 // The ellipse of the conic in `fit` (coefficients and frame set); false when it is none, or
@@ -145,19 +145,21 @@ int turn_bin(const Fit& fit, float co, float si, const Point& p) {
 float coverage(const std::vector<Point>& points, const Fit& fit) {
   std::array<bool, kCoverageBins> seen{};
   const float co = std::cos(fit.theta), si = std::sin(fit.theta);
-  const auto bin_of = [&](const Point& p) { return turn_bin(fit, co, si, p); };
+  int previous = 0;  // the bin of points[i - 1] when that is an inlier
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!points[i].inlier) continue;
-    const int bin = bin_of(points[i]);
+    const int bin = turn_bin(fit, co, si, points[i]);
     seen[static_cast<std::size_t>(bin)] = true;
-    if (i % kSamplesPerPiece == 0 || !points[i - 1].inlier) continue;
+    const bool after_inlier = i % kSamplesPerPiece != 0 && points[i - 1].inlier;
+    const int from = previous;
+    previous = bin;
+    if (!after_inlier) continue;
     // The shorter way round from the previous sample's bin.
-    const int previous = bin_of(points[i - 1]);
-    int step = bin - previous;
+    int step = bin - from;
     if (step > kCoverageBins / 2) step -= kCoverageBins;
     if (step < -kCoverageBins / 2) step += kCoverageBins;
     for (int k = 1; k < std::abs(step); ++k) {
-      const int b = (previous + (step > 0 ? k : -k) + kCoverageBins) % kCoverageBins;
+      const int b = (from + (step > 0 ? k : -k) + kCoverageBins) % kCoverageBins;
       seen[static_cast<std::size_t>(b)] = true;
     }
   }
@@ -240,7 +242,7 @@ bool along(const Fit& fit, const Marking& m, float tolerance) {
   const double u = ((m.x0 + m.x1) / 2 - fit.mx) / fit.s, v = ((m.y0 + m.y1) / 2 - fit.my) / fit.s;
   const double gu = 2 * fit.a * u + fit.b * v + fit.d, gv = fit.b * u + 2 * fit.c * v + fit.e;
   const double dx = m.x1 - m.x0, dy = m.y1 - m.y0;
-  const double norm = std::hypot(gu, gv) * std::hypot(dx, dy);
+  const double norm = std::sqrt((gu * gu + gv * gv) * (dx * dx + dy * dy));
   return norm > 0 && std::abs(gu * dx + gv * dy) <= kMaxTangentSin * norm;
 }
 
