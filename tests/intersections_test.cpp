@@ -2,6 +2,7 @@
 // of painted lines on turf, each found once with its type, centre and ray headings; pieces of
 // one junction merge; an acute far corner is an L and a curve's chords are none; bad input
 // gives none and never crashes.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -110,6 +111,29 @@ TEST(Intersections, PalePaintBeyondTheColourCutStillMeets) {
   LineDetector detector(intersections_on(), tight);
   std::vector<Segment> segments;
   detector.detect(noisy(clean, 5), segments);
+  expect_junction(detector.features().intersections, corner, JunctionType::L, {along, up}, 10);
+}
+
+// A far line in haze: paint blended towards the turf's green, too green for the pieces' anchors
+// (their grey limit keeps turf texture out), while the detector's own drawing has no such limit.
+// Its segments, which no piece lies along, are lines for the junctions too.
+TEST(Intersections, PaintTooGreenForThePiecesStillMeetsThroughTheDetectorsSegments) {
+  const cv::Scalar haze(120, 190, 120);  // B, G, R: brighter than the turf, far from grey
+  const double sum = haze[0] + haze[1] + haze[2];
+  const double chroma = std::abs(haze[2] / sum - 1.0 / 3) + std::abs(haze[1] / sum - 1.0 / 3);
+  ASSERT_GT(chroma, FieldBoundaryParams{}.paint_chroma) << "the pieces' anchors must refuse this paint";
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  const cv::Point2f corner(120, 380), along(600, 350), up(180, 60);
+  cv::line(clean, corner, along, kPaint, 10);
+  cv::line(clean, corner, up, haze, 10);
+  const cv::Mat frame = noisy(clean, 5);
+  LineDetector detector(intersections_on());
+  std::vector<Segment> segments;
+  detector.detect(frame, segments);
+  const auto runs_up = [&](const Segment& s) {
+    return std::abs(s.x1 - s.x0) < 0.3f * std::abs(s.y1 - s.y0) && std::abs(s.y1 - s.y0) > 100;
+  };
+  ASSERT_TRUE(std::any_of(segments.begin(), segments.end(), runs_up)) << "the detector's drawing finds the hazy line";
   expect_junction(detector.features().intersections, corner, JunctionType::L, {along, up}, 10);
 }
 

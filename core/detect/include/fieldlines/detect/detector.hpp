@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <opencv2/core/mat.hpp>
@@ -63,7 +64,8 @@ class LineDetector {
  private:
   struct Impl;
   const cv::Mat* normalise(const cv::Mat& image);  // to 8-bit BGR; nullptr if smaller than 3x3
-  void find_pieces(const cv::Mat& bgr, std::optional<float> gain);  // junctions, circle
+  // Junctions and the circle; `segments`: the detector's own, labelled.
+  void find_pieces(const cv::Mat& bgr, std::optional<float> gain, std::span<const Segment> segments);
   DetectorParams params_;
   Thresholds thresholds_;
   bool find_boundary_ = false;
