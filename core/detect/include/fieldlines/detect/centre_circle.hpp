@@ -22,7 +22,7 @@
 // joins it when the fit of both still passes and covers more of the turn (the circle cut by the
 // halfway line or a robot is several chains).
 //
-// Pieces of a flat or faint circle often do not chain at all. So every pair of the 24 longest
+// Pieces of a flat or faint circle often do not chain at all. So every pair of the 16 longest
 // pieces is also a hypothesis: fitted with axes along the image's turned by -9 to 9 degrees in
 // steps of 3 (four unknowns, which two pieces determine; the camera's roll is small, but a circle
 // seen off the optical axis is a turned ellipse), its support is those pieces along it (their
@@ -30,7 +30,7 @@
 // a line crossing the circle is no support), scored by the turn the support covers (at least
 // four pieces). The best pair's support among all pieces is fitted in full and checked as a
 // chain is, twice over; it replaces the chains' ellipse when it covers more of the turn. The
-// cap bounds the cost (at most 276 pairs, 1,932 fits of four unknowns). At most one ellipse per frame (there
+// cap bounds the cost (at most 120 pairs, 840 fits of four unknowns). At most one ellipse per frame (there
 // is one centre circle); its confidence is the share of the turn its points cover.
 //
 // Given the frame, the ellipse is then refitted to the paint itself: at 72 points round it, on
