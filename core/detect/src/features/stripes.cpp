@@ -73,24 +73,36 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
   work.brightness.resize(static_cast<std::size_t>(steps));
   work.is_field.resize(static_cast<std::size_t>(steps));
   work.pixels.resize(static_cast<std::size_t>(steps));
-  int valid = 0;
-  bool cut = false;
-  for (; valid < steps; ++valid) {
-    const float t = float(valid - back);
-    const long x = std::lround(px + t * sx), y = std::lround(py + t * sy);
-    if (x < 0 || y < 0 || x >= bgr.cols || y >= bgr.rows) {
-      cut = y >= 0 && valid > back;
-      break;
+  // Steps are read as the walk below reaches them: most profiles find the far turf a few pixels
+  // past the paint, long before the widest plausible width.
+  int read = 0;        // steps read so far, each inside the image
+  bool ended = false;  // the profile ends after `read` steps (the border, or all steps)
+  bool cut = false;    // it ended at the image's bottom or side border while past the edge
+  const auto inside = [&](int i) {  // reads up to step i; whether step i lies in the image
+    for (; read <= i && !ended; ++read) {
+      if (read == steps) {
+        ended = true;
+        break;
+      }
+      const float t = float(read - back);
+      const long x = std::lround(px + t * sx), y = std::lround(py + t * sy);
+      if (x < 0 || y < 0 || x >= bgr.cols || y >= bgr.rows) {
+        cut = y >= 0 && read > back;
+        ended = true;
+        break;
+      }
+      const std::uint8_t* p = bgr.ptr<std::uint8_t>(static_cast<int>(y)) + 3 * x;
+      work.brightness[static_cast<std::size_t>(read)] = brightness(p);
+      work.is_field[static_cast<std::size_t>(read)] = pixel.field(p);
+      work.pixels[static_cast<std::size_t>(read)] = p;
     }
-    const std::uint8_t* p = bgr.ptr<std::uint8_t>(static_cast<int>(y)) + 3 * x;
-    work.brightness[static_cast<std::size_t>(valid)] = brightness(p);
-    work.is_field[static_cast<std::size_t>(valid)] = pixel.field(p);
-    work.pixels[static_cast<std::size_t>(valid)] = p;
-  }
+    return i < read;
+  };
   const std::vector<float>& b = work.brightness;
   const std::vector<std::uint8_t>& turf = work.is_field;
   // Turf outside the edge, in the frame's field colour.
-  int outside = std::min(back, valid - 1);
+  inside(back);
+  int outside = std::min(back, read - 1);
   while (outside >= 0 && !turf[outside]) --outside;
   if (outside < 0) return {};
   // Turf returns on the paint side: the first pixel past the edge in the field colour or in the
@@ -103,8 +115,8 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
   float level = 0;
   for (;;) {
     do ++far_turf;
-    while (far_turf < valid && !turf[far_turf] && !same_turf(outside_pixel, work.pixels[far_turf]));
-    if (far_turf >= valid) return {cut ? Verdict::Cut : Verdict::No};
+    while (inside(far_turf) && !turf[far_turf] && !same_turf(outside_pixel, work.pixels[far_turf]));
+    if (!inside(far_turf)) return {cut ? Verdict::Cut : Verdict::No};
     for (int i = peak + 1; i <= far_turf; ++i)
       if (b[i] > b[peak]) peak = i;
     if (peak == far_turf) continue;  // brighter than all before it: faint paint, not turf
