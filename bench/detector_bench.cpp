@@ -211,9 +211,8 @@ int main(int argc, char** argv) {
   std::printf("  %-11s %9s %11s %7s %8s  %s\n", "detector", "block ms", "interl. ms", "block", "interl.", "worse");
   for (const auto& t : times) {
     const peers::RatioSummary r = peers::ratio_in_both_orders(times.front(), t);
-    const auto mean = [](const std::vector<double>& ms) { return ms.empty() ? 0 : peers::total(ms) / static_cast<double>(ms.size()); };
-    std::printf("  %-11s %9.3f %11.3f %7.2f %8.2f  %s\n", t.name.c_str(), mean(t.pooled(peers::Order::Block)),
-                mean(t.pooled(peers::Order::Interleaved)), r.by_order[0], r.by_order[1],
+    std::printf("  %-11s %9.3f %11.3f %7.2f %8.2f  %s\n", t.name.c_str(), peers::mean(t.pooled(peers::Order::Block)),
+                peers::mean(t.pooled(peers::Order::Interleaved)), r.by_order[0], r.by_order[1],
                 worse_text(r).c_str());
   }
   const peers::RatioSummary vs_edlines = peers::ratio_in_both_orders(times.front(), row("edlines"));

@@ -103,10 +103,8 @@ struct TargetCheck {
   bool met() const { return ratio.worse <= limit; }
 };
 
-double mean(const std::vector<double>& ms) { return ms.empty() ? 0 : peers::total(ms) / static_cast<double>(ms.size()); }
-
 nlohmann::ordered_json calls_json(const std::vector<double>& ms) {
-  return {{"mean_ms", mean(ms)}, {"median_ms", peers::quantile(ms, 0.5)}, {"p90_ms", peers::quantile(ms, 0.9)}};
+  return {{"mean_ms", peers::mean(ms)}, {"median_ms", peers::quantile(ms, 0.5)}, {"p90_ms", peers::quantile(ms, 0.9)}};
 }
 
 nlohmann::ordered_json ratio_json(const peers::RatioSummary& r) {
@@ -222,7 +220,7 @@ int cmd_bench(const Args& args) {
     const std::vector<double> block = t.pooled(peers::Order::Block), inter = t.pooled(peers::Order::Interleaved);
     std::vector<double> all = block;
     all.insert(all.end(), inter.begin(), inter.end());
-    std::printf("%-20s %9.3f %11.3f %13.1f   %6.2f %8.2f  %s\n", t.name.c_str(), mean(block), mean(inter), per_image, r.by_order[0], r.by_order[1], worse_text(r).c_str());
+    std::printf("%-20s %9.3f %11.3f %13.1f   %6.2f %8.2f  %s\n", t.name.c_str(), peers::mean(block), peers::mean(inter), per_image, r.by_order[0], r.by_order[1], worse_text(r).c_str());
     nlohmann::ordered_json row_json{{"name", t.name}};
     row_json.update(calls_json(all));  // "mean_ms", "median_ms", "p90_ms" over both orders
     row_json["segments_per_image"] = per_image;

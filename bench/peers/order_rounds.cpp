@@ -114,6 +114,8 @@ double quantile(std::vector<double> v, double q) {
 
 double total(const std::vector<double>& ms) { return std::accumulate(ms.begin(), ms.end(), 0.0); }
 
+double mean(const std::vector<double>& ms) { return ms.empty() ? 0 : total(ms) / static_cast<double>(ms.size()); }
+
 RatioSummary ratio_in_both_orders(const DetectorTimes& a, const DetectorTimes& b) {
   RatioSummary s;
   std::vector<double> per_round[2];

@@ -73,6 +73,8 @@ double quantile(std::vector<double> v, double q);
 
 // The sum of `ms`: a round's total time.
 double total(const std::vector<double>& ms);
+// The mean call of `ms` (0 when empty).
+double mean(const std::vector<double>& ms);
 
 // a/b in each order: the median over rounds of (a's total time) / (b's total time) in the
 // round. `worse` is the larger of the two (the one less flattering to a), `min`/`max` its
