@@ -48,11 +48,20 @@ struct Fit {
 
 float length(const Marking& m) { return std::hypot(m.x1 - m.x0, m.y1 - m.y0); }
 
+// The image point (x, y) in the fit's centred and scaled coordinates (u, v), and the conic's
+// gradient (gu, gv) there.
+struct ConicPoint {
+  double u = 0, v = 0, gu = 0, gv = 0;
+};
+ConicPoint conic_point(const Fit& fit, float x, float y) {
+  const double u = (x - fit.mx) / fit.s, v = (y - fit.my) / fit.s;
+  return {u, v, 2 * fit.a * u + fit.b * v + fit.d, fit.b * u + 2 * fit.c * v + fit.e};
+}
+
 // Sampson's first-order distance of (x, y) from the conic, in px.
 float distance(const Fit& fit, float x, float y) {
-  const double u = (x - fit.mx) / fit.s, v = (y - fit.my) / fit.s;
+  const auto [u, v, gu, gv] = conic_point(fit, x, y);
   const double q = fit.a * u * u + fit.b * u * v + fit.c * v * v + fit.d * u + fit.e * v + fit.f;
-  const double gu = 2 * fit.a * u + fit.b * v + fit.d, gv = fit.b * u + 2 * fit.c * v + fit.e;
   const double g2 = gu * gu + gv * gv;  // normalised coordinates: no overflow for hypot() to guard
   return g2 > 0 ? static_cast<float>(std::abs(q) / std::sqrt(g2) * fit.s) : 1e9f;
 }
@@ -241,11 +250,10 @@ bool along(const Fit& fit, const Marking& m, float tolerance) {
     const float t = static_cast<float>(k) / static_cast<float>(kSamplesPerPiece - 1);
     if (distance(fit, m.x0 + t * (m.x1 - m.x0), m.y0 + t * (m.y1 - m.y0)) > 2 * tolerance) return false;
   }
-  const double u = ((m.x0 + m.x1) / 2 - fit.mx) / fit.s, v = ((m.y0 + m.y1) / 2 - fit.my) / fit.s;
-  const double gu = 2 * fit.a * u + fit.b * v + fit.d, gv = fit.b * u + 2 * fit.c * v + fit.e;
+  const ConicPoint c = conic_point(fit, (m.x0 + m.x1) / 2, (m.y0 + m.y1) / 2);
   const double dx = m.x1 - m.x0, dy = m.y1 - m.y0;
-  const double norm = std::sqrt((gu * gu + gv * gv) * (dx * dx + dy * dy));
-  return norm > 0 && std::abs(gu * dx + gv * dy) <= kMaxTangentSin * norm;
+  const double norm = std::sqrt((c.gu * c.gu + c.gv * c.gv) * (dx * dx + dy * dy));
+  return norm > 0 && std::abs(c.gu * dx + c.gv * dy) <= kMaxTangentSin * norm;
 }
 
 // Marks in `support` which of the `longest` longest pieces (work.order) lie along `fit` and
