@@ -1,3 +1,4 @@
+#include <cstdlib>
 // `fieldlines eval --gt DIR`: detection + classification scored against synthetic ground truth.
 #include <chrono>
 #include <cstdio>
@@ -57,7 +58,8 @@ options:
                      4 px of the carpet's top) and the markings (share of the pixels along the
                      stripes' centre lines within half the line's width + 1 px of a line's centre)
   --max-distance PX  edge match distance (default 2.5)
-  --min-width PX     painted parts narrower than this do not count in recall (default 1)
+  --min-width PX     painted parts narrower than this are not visible: they do not count in
+                     recall, nor in the truth of junctions, their arms and the circle (default 1)
   --markdown         print the table as Markdown
   --json OUT         write the scores as JSON (per group and total)
   -h, --help         this help
@@ -237,8 +239,18 @@ int cmd_eval_gt(const Args& args) {
       if (features) {
         // Without its mask (not written, unreadable) every column showing carpet counts.
         const cv::Mat mask = cv::imread(item.mask.string(), cv::IMREAD_UNCHANGED);
-        const auto ft = synth::feature_truth(item.truth, mask);
+        const auto ft = synth::feature_truth(item.truth, mask, match.min_width_px);
         feature_score = synth::score_features(item.truth, ft, detector.features());
+        if (std::getenv("FL_DUMP")) {
+          std::fprintf(stderr, "F %s %s\n", item.image.string().c_str(), item.condition.c_str());
+          for (const auto& i : ft.intersections) { std::fprintf(stderr, "T %.1f %.1f %s", i.x, i.y, to_string(i.type)); for (int k = 0; k < i.num_rays; ++k) std::fprintf(stderr, " %.3f", i.heading_rays[k]); std::fprintf(stderr, "\n"); }
+          if (ft.circle) { const auto& c = ft.circle->ellipse; std::fprintf(stderr, "C %.1f %.1f %.1f %.1f %.1f %.2f\n", c.cx, c.cy, c.width, c.height, c.angle_deg, ft.circle->visible_share); }
+          for (const auto& c : detector.features().ellipses) std::fprintf(stderr, "E %.1f %.1f %.1f %.1f %.1f %.2f\n", c.cx, c.cy, c.width, c.height, c.angle_deg, c.confidence);
+          for (const auto& i : ft.ignored) std::fprintf(stderr, "I %.1f %.1f\n", i.x, i.y);
+          for (const auto& i : detector.features().intersections) std::fprintf(stderr, "D %.1f %.1f %s\n", i.x, i.y, to_string(i.type));
+          for (const auto& m : detector.features().markings) std::fprintf(stderr, "M %.1f %.1f %.1f %.1f %.1f\n", m.x0, m.y0, m.x1, m.y1, m.width);
+          for (const auto& s : segments) std::fprintf(stderr, "S %.1f %.1f %.1f %.1f %d\n", s.x0, s.y0, s.x1, s.y1, int(s.label));
+        }
       }
       Group& g = groups[{item.row, item.condition}];
       g.score += score, g.features += feature_score, g.detect_ms += ms;

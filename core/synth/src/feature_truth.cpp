@@ -92,7 +92,7 @@ float heading(const Vector2d& v) {
 
 }  // namespace
 
-FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask) {
+FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask, float min_width_px) {
   FeatureTruth out;
   out.carpet_top = carpet_top_rows(truth, mask);
   const FieldModel field = make_field({.scene = truth.scene, .line_width = truth.line_width});
@@ -104,7 +104,7 @@ FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask) {
     Intersection i{.x = float(centre->x()), .y = float(centre->y()), .confidence = 1};
     float width = 0;
     const double off = nearest_paint(truth, i.x, i.y, "", width);
-    if (off > std::max(3.f, width) || width < 1) {  // hidden, or too thin to see
+    if (off > std::max(3.f, width) || width < min_width_px) {  // hidden, or too thin to see
       out.ignored.push_back(i);
       continue;
     }
@@ -114,7 +114,12 @@ FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask) {
         const auto p = camera.project(Vector3d(j.at.x() + s * arm.x(), j.at.y() + s * arm.y(), 0));
         if (!p || !inside(*p, k)) break;
         if ((*p - *centre).norm() >= kArmPx) {
-          if (i.num_rays < 4) i.heading_rays[static_cast<std::size_t>(i.num_rays++)] = heading(*p - *centre);
+          // An arm shows where its own paint is visible there: at an X of a near line and a
+          // crossing line seen edge-on, the centre's paint is the near line's.
+          float arm_width = 0;
+          const double arm_off = nearest_paint(truth, float(p->x()), float(p->y()), "", arm_width);
+          if (arm_off <= std::max(3.f, arm_width) && arm_width >= min_width_px && i.num_rays < 4)
+            i.heading_rays[static_cast<std::size_t>(i.num_rays++)] = heading(*p - *centre);
           break;
         }
       }
@@ -163,7 +168,9 @@ FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask) {
       if (!p) return out;  // partly behind the camera: no ellipse in the image
       points.emplace_back(float(p->x()), float(p->y()));
       float width = 0;
-      if (inside(*p, k) && nearest_paint(truth, float(p->x()), float(p->y()), line.name, width) <= 2) ++visible;
+      if (inside(*p, k) && nearest_paint(truth, float(p->x()), float(p->y()), line.name, width) <= 2 &&
+          width >= min_width_px)
+        ++visible;
     }
     const cv::RotatedRect r = cv::fitEllipse(points);
     out.circle = TruthCircle{{r.center.x, r.center.y, r.size.width, r.size.height, r.angle, 1},

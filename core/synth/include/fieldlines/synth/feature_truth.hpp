@@ -5,8 +5,9 @@
 // Intersections: where two straight painted lines of the field meet (their centrelines cross
 // within a line width of both), with one arm per side on which a line goes on. A junction is
 // visible when its centre projects into the frame within 3 px (or a line width) of a visible
-// painted line of the truth (robots hide some) where the paint is at least 1 px wide; an arm is
-// visible when it reaches 12 px from the centre inside the frame. Its type is what is visible:
+// painted line of the truth (robots hide some) where the paint is at least `min_width_px` wide
+// (1 px); an arm is visible when it reaches 12 px from the centre inside the frame and its own
+// line's paint is visible there, as wide as that. Its type is what is visible:
 // 2 arms an L, 3 a T, 4 an X; fewer than 2 arms, or 2 nearly opposite, is no junction in the
 // image. Headings as soccer_vision_2d_msgs: radians in [0, 2pi), 0 along +x, pi/2 image down,
 // ascending. Junctions that do not meet these conditions, and the centre circle's crossings with
@@ -14,7 +15,8 @@
 //
 // The centre circle: the image ellipse of the whole circle (when all of it is in front of the
 // camera, cv::fitEllipse on 720 projected points of its centreline) and the share of it visible
-// (inside the frame and within 2 px of the truth's visible "centre circle" polylines).
+// (inside the frame, within 2 px of the truth's visible "centre circle" polylines, where the paint
+// is at least `min_width_px` wide).
 //
 // The field boundary: per image column, the first row from the top whose pixel centre sees the
 // carpet (the green, run-off included) through the camera, objects left out: the outline a
@@ -54,7 +56,8 @@ struct FeatureTruth {
 };
 
 // `mask`: the frame's label mask (render.hpp's MaskClass, CV_8UC1 of the frame's size) or empty.
-FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask = {});
+// `min_width_px`: paint narrower than this is too thin to see (gt_eval.hpp's, for the segments).
+FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask = {}, float min_width_px = 1);
 // The carpet_top rows alone.
 std::vector<float> carpet_top_rows(const GroundTruth& truth, const cv::Mat& mask = {});
 
