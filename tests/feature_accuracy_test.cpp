@@ -2,8 +2,8 @@
 // truth of synthetic frames (feature_truth.hpp) the detector was not tuned on (seeds 4242 and
 // 777, SSL and Kid, every light): the boundary within 4 px of the carpet's top on at least 95 %
 // of the columns showing it, and the markings within half a line width + 1 px of a painted
-// line's centre. The truth itself is checked too: a boundary drawn from it scores perfectly, one
-// shifted by 5 px scores nothing.
+// line's centre; the junctions meet their precision, recall and type targets. The truth itself
+// is checked too: a boundary drawn from it scores perfectly, one shifted by 5 px scores nothing.
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -80,6 +80,16 @@ TEST(FeatureAccuracy, MarkingsLieOnTheCentreLinesOfPaintedLines) {
     ASSERT_GT(s.marking_px, 1000) << "the frames must show stripes";
     EXPECT_GE(s.marking_share(), 0.95) << to_string(scene);
   }
+}
+
+// The junction targets, both scenes pooled: precision 0.90, recall 0.70, type 0.90.
+TEST(FeatureAccuracy, JunctionsMeetTheirTargets) {
+  FeatureScore s;
+  for (const Frame& f : held_out_frames()) s += score_features(f.truth, f.detected);
+  ASSERT_GE(s.truth, 15) << "the frames must show junctions";
+  EXPECT_GE(s.precision(), 0.90) << s.matched << " of " << s.detected;
+  EXPECT_GE(s.recall(), 0.70) << s.matched << " of " << s.truth;
+  EXPECT_GE(s.type_accuracy(), 0.90) << s.type_correct << " of " << s.matched;
 }
 
 }  // namespace
