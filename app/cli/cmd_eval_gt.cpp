@@ -1,4 +1,3 @@
-#include <cstdlib>
 // `fieldlines eval --gt DIR`: detection + classification scored against synthetic ground truth.
 #include <chrono>
 #include <cstdio>
@@ -241,16 +240,6 @@ int cmd_eval_gt(const Args& args) {
         const cv::Mat mask = cv::imread(item.mask.string(), cv::IMREAD_UNCHANGED);
         const auto ft = synth::feature_truth(item.truth, mask, match.min_width_px);
         feature_score = synth::score_features(item.truth, ft, detector.features());
-        if (std::getenv("FL_DUMP")) {
-          std::fprintf(stderr, "F %s %s\n", item.image.string().c_str(), item.condition.c_str());
-          for (const auto& i : ft.intersections) { std::fprintf(stderr, "T %.1f %.1f %s", i.x, i.y, to_string(i.type)); for (int k = 0; k < i.num_rays; ++k) std::fprintf(stderr, " %.3f", i.heading_rays[k]); std::fprintf(stderr, "\n"); }
-          if (ft.circle) { const auto& c = ft.circle->ellipse; std::fprintf(stderr, "C %.1f %.1f %.1f %.1f %.1f %.2f\n", c.cx, c.cy, c.width, c.height, c.angle_deg, ft.circle->visible_share); }
-          for (const auto& c : detector.features().ellipses) std::fprintf(stderr, "E %.1f %.1f %.1f %.1f %.1f %.2f\n", c.cx, c.cy, c.width, c.height, c.angle_deg, c.confidence);
-          for (const auto& i : ft.ignored) std::fprintf(stderr, "I %.1f %.1f\n", i.x, i.y);
-          for (const auto& i : detector.features().intersections) std::fprintf(stderr, "D %.1f %.1f %s\n", i.x, i.y, to_string(i.type));
-          for (const auto& m : detector.features().markings) std::fprintf(stderr, "M %.1f %.1f %.1f %.1f %.1f\n", m.x0, m.y0, m.x1, m.y1, m.width);
-          for (const auto& s : segments) std::fprintf(stderr, "S %.1f %.1f %.1f %.1f %d\n", s.x0, s.y0, s.x1, s.y1, int(s.label));
-        }
       }
       Group& g = groups[{item.row, item.condition}];
       g.score += score, g.features += feature_score, g.detect_ms += ms;
