@@ -1,7 +1,7 @@
 // Intersections (intersections.hpp) on synthetic frames with known answers: a T, an X and an L
 // of painted lines on turf, each found once with its type, centre and ray headings; pieces of
-// one junction merge; an acute far corner is an L and a curve's chords are none; bad input
-// gives none and never crashes.
+// one junction merge; an acute far corner is an L and a curve's chords are none, nor the centre
+// circle's; bad input gives none and never crashes.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -117,6 +117,7 @@ TEST(Intersections, PalePaintBeyondTheColourCutStillMeets) {
 // A far line in haze: paint blended towards the turf's green, too green for the pieces' anchors
 // (their grey limit keeps turf texture out), while the detector's own drawing has no such limit.
 // Its segments, which no piece lies along, are lines for the junctions too.
+// The pieces are drawn for the centre circle, so it is on here.
 TEST(Intersections, PaintTooGreenForThePiecesStillMeetsThroughTheDetectorsSegments) {
   const cv::Scalar haze(120, 190, 120);  // B, G, R: brighter than the turf, far from grey
   const double sum = haze[0] + haze[1] + haze[2];
@@ -127,7 +128,9 @@ TEST(Intersections, PaintTooGreenForThePiecesStillMeetsThroughTheDetectorsSegmen
   cv::line(clean, corner, along, kPaint, 10);
   cv::line(clean, corner, up, haze, 10);
   const cv::Mat frame = noisy(clean, 5);
-  LineDetector detector(intersections_on());
+  DetectorParams params = intersections_on();
+  params.centre_circle = true;
+  LineDetector detector(params);
   std::vector<Segment> segments;
   detector.detect(frame, segments);
   const auto runs_up = [&](const Segment& s) {
@@ -135,6 +138,32 @@ TEST(Intersections, PaintTooGreenForThePiecesStillMeetsThroughTheDetectorsSegmen
   };
   ASSERT_TRUE(std::any_of(segments.begin(), segments.end(), runs_up)) << "the detector's drawing finds the hazy line";
   expect_junction(detector.features().intersections, corner, JunctionType::L, {along, up}, 10);
+}
+
+// The centre circle in perspective with the halfway line through it, the circle stage off (no
+// second drawing: the detector's own segments are the lines): the segments along the ring are
+// chords that bend into each other, so they make no junction; the circle's crossings with the
+// line count neither way.
+TEST(Intersections, TheCirclesChordsMakeNoJunctions) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  const cv::Point2f centre(330, 260);
+  const cv::Size2f axes(250, 90);
+  cv::ellipse(clean, centre, axes, 0, 0, 360, kPaint, 6, cv::LINE_AA);
+  cv::line(clean, cv::Point(10, 255), cv::Point(630, 265), kPaint, 6, cv::LINE_AA);
+  LineDetector detector(intersections_on());
+  std::vector<Segment> segments;
+  detector.detect(noisy(clean, 11), segments);
+  const auto on_ring = [&](const Segment& s) {
+    const auto off = [&](float x, float y) {
+      return std::abs(std::hypot((x - centre.x) / axes.width, (y - centre.y) / axes.height) - 1);
+    };
+    return off(s.x0, s.y0) < 0.05f && off(s.x1, s.y1) < 0.05f;
+  };
+  ASSERT_GE(std::count_if(segments.begin(), segments.end(), on_ring), 4) << "the detector draws the ring";
+  for (const Intersection& j : detector.features().intersections) {
+    const bool at_crossing = std::abs(j.y - 260) < 12 && (std::abs(j.x - 80) < 12 || std::abs(j.x - 580) < 12);
+    EXPECT_TRUE(at_crossing) << to_string(j.type) << " at " << j.x << ", " << j.y;
+  }
 }
 
 TEST(Intersections, ParallelAndDistantLinesMeetNowhere) {

@@ -1,7 +1,10 @@
 // Stripes (stripes.hpp) on synthetic frames with known answers: painted lines drawn on turf are
-// markings with their centre and width; a wall or a post with turf on one side only is not.
+// markings with their centre and width; a wall or a post with turf on one side only is not; the
+// centre circle's chords are no straight stripes.
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -250,6 +253,61 @@ TEST(Stripes, OnePassFlagsWhatTheTwoRunsFlag) {
   }
   EXPECT_GT(stripes, 20);
   EXPECT_GT(thin_only, 0) << "the frames must hold lines that only thin lines accepted take";
+}
+
+// From (x, y) to the nearest polyline of the truth named `name`.
+float distance_to(const synth::GroundTruth& truth, std::string_view name, float x, float y) {
+  float best = 1e9f;
+  for (const synth::TruthFeature& f : truth.features) {
+    if (f.name != name) continue;
+    for (std::size_t i = 1; i < f.points.size(); ++i) {
+      const synth::TruthPoint &a = f.points[i - 1], &b = f.points[i];
+      const float dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+      const float t = len2 > 0 ? std::clamp(((x - a.x) * dx + (y - a.y) * dy) / len2, 0.f, 1.f) : 0.f;
+      best = std::min(best, std::hypot(x - a.x - t * dx, y - a.y - t * dy));
+    }
+  }
+  return best;
+}
+
+// Shape::Straight on the detector's segments of synthetic Kid frames: of those along the centre
+// circle, chords whose paint bows, about half pass (18 of 33); of those along the halfway line
+// and the touch lines nearly all (19 of 22). Shape::Any passes every one of both.
+TEST(Stripes, TheCentreCirclesChordsAreNoStraightStripes) {
+  synth::SynthParams p;
+  p.field.scene = synth::Scene::Kid;
+  p.conditions.assign(synth::all_conditions().begin(), synth::all_conditions().end());
+  int chords = 0, straight_chords = 0, lines = 0, straight_lines = 0;
+  for (int i = 0; i < 12; ++i) {
+    const synth::SynthSample sample = synth::generate(p, 1, i);
+    std::vector<Segment> segments;
+    LineDetector(DetectorParams{}).detect(sample.bgr, segments);
+    const std::optional<Rgb> field = estimate_field_colour(sample.bgr);
+    // Both ends and the middle within 4 px of the named line's centre (a segment lies on an edge).
+    const auto along = [&](const Segment& s, std::string_view name) {
+      return distance_to(sample.truth, name, s.x0, s.y0) < 4 && distance_to(sample.truth, name, s.x1, s.y1) < 4 &&
+             distance_to(sample.truth, name, 0.5f * (s.x0 + s.x1), 0.5f * (s.y0 + s.y1)) < 4;
+    };
+    for (Segment& s : segments) s.label = Label::Marking;
+    std::vector<Segment> any = segments, straight = segments;
+    StripeWorkspace work;
+    std::vector<Marking> out;
+    find_stripes(sample.bgr, field, any, stripes_on(), work, out);
+    find_stripes(sample.bgr, field, straight, stripes_on(), work, out, ThinLines::Refused, Shape::Straight);
+    for (std::size_t k = 0; k < segments.size(); ++k) {
+      EXPECT_FALSE(straight[k].label == Label::Marking && any[k].label != Label::Marking) << "Straight keeps a subset";
+      if (any[k].label != Label::Marking) continue;
+      const bool kept = straight[k].label == Label::Marking;
+      if (along(segments[k], "centre circle")) ++chords, straight_chords += kept;
+      else if (along(segments[k], "halfway line") || along(segments[k], "touch line +y") ||
+               along(segments[k], "touch line -y"))
+        ++lines, straight_lines += kept;
+    }
+  }
+  ASSERT_GE(chords, 5) << "the frames must show the centre circle";
+  ASSERT_GE(lines, 5) << "and straight lines";
+  EXPECT_LE(straight_chords, 0.7 * chords) << straight_chords << " of " << chords << " chords pass as straight";
+  EXPECT_GE(straight_lines, 0.8 * lines) << straight_lines << " of " << lines << " lines pass as straight";
 }
 
 TEST(Stripes, OtherLabelsAreLeftAlone) {

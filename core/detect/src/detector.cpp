@@ -151,9 +151,12 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   if (pieces) find_pieces(*bgr, gain, out);
 }
 
-// The junctions and the circle need pieces shorter than the detector's minimum length (a line
-// running into a crossing stops short of it; a curve has no long straight piece): the frame is
-// drawn a second time from the same gradients, and those pieces that are stripes are the input.
+// The centre circle needs pieces shorter than the detector's minimum length (a curve has no
+// long straight piece): the frame is drawn a second time from the same gradients, and those
+// pieces that are stripes are its input. The junctions take the detector's own segments that are
+// straight stripes, and those pieces when they are drawn (a line running into a crossing often
+// stops short of it): the second drawing costs about what the first does on textured turf, so
+// it runs only for the circle.
 void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, std::span<const Segment> segments) {
   constexpr int kPieceScanInterval = 4;  // a short piece needs an anchor on it
   FieldFeatures& f = impl_->features;
@@ -184,8 +187,11 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
   // Only the markings among the pieces are used (find_stripes): a piece whose colours rule that
   // out is dropped before its angle test, about half of its validation (most pieces on turf).
   const MarkingColours colours{gain, short_pieces, f.field_boundary};
-  impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, {rows, bright, grey},
-                       {&MarkingColours::may_be_marking, &colours}, pieces);
+  if (params_.centre_circle)
+    impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, {rows, bright, grey},
+                         {&MarkingColours::may_be_marking, &colours}, pieces);
+  else
+    pieces.clear();
   label(pieces, gain, short_pieces, f.field_boundary);
   find_stripes(bgr, impl_->field, pieces, params_, impl_->piece_stripes, impl_->arcs);
   std::vector<std::uint8_t>& on_ellipse = impl_->circle.on_ellipse;
@@ -196,14 +202,16 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
     impl_->lines.clear();
     for (std::size_t i = 0; i < impl_->arcs.size(); ++i)
       if (!on_ellipse[i]) impl_->lines.push_back(impl_->arcs[i]);
-    // A far line in haze can be paint too green for the pieces' anchors, while the detector's
-    // own drawing (no such limit) has it: its segments that no piece lies along, when the pieces'
-    // colour test and the stripes check keep them, are lines too. Tuning seeds: junction recall
-    // 0.607 -> 0.650 at precision 0.953 -> 0.938; held out 0.537 -> 0.569 at 0.971 -> 0.972
-    // (docs/detector.md).
+    // The detector's own segments that no piece lies along, when the pieces' colour test and
+    // the stripes check keep them as straight stripes, are lines too: all of them without the
+    // second drawing, and with it a far line in haze, paint too green for the pieces' anchors
+    // that the detector's own drawing (no such limit) has. A segment whose paint bows
+    // (Shape::Straight) is a chord of the circle or an arc, whose neighbours and crossings make
+    // false junctions (docs/detector.md).
     collect_unpieced(segments, pieces, impl_->unpieced);
     label(impl_->unpieced, gain, short_pieces, f.field_boundary);
-    find_stripes(bgr, impl_->field, impl_->unpieced, params_, impl_->unpieced_stripes, impl_->unpieced_lines);
+    find_stripes(bgr, impl_->field, impl_->unpieced, params_, impl_->unpieced_stripes, impl_->unpieced_lines,
+                 ThinLines::Refused, Shape::Straight);
     impl_->lines.insert(impl_->lines.end(), impl_->unpieced_lines.begin(), impl_->unpieced_lines.end());
     find_intersections(impl_->lines, params_, impl_->intersections, f.intersections, bgr.size());
   }

@@ -43,8 +43,8 @@ struct DetectorParams {
   bool intersections = false;
   double intersection_min_angle = 10;  // far corners look this acute in perspective
   double intersection_reach = 1.5;
-  // The centre circle from short stripe pieces (centre_circle.hpp); off by default. On, or with
-  // intersections on, the frame is drawn a second time for pieces from piece_length px.
+  // The centre circle from short stripe pieces (centre_circle.hpp); off by default. On, the frame
+  // is drawn a second time for pieces from piece_length px, which the junctions take too.
   bool centre_circle = false;
   int piece_length = 10;
   // A field darker than this (R + G + B of its colour, light.hpp) lowers the gradient threshold
@@ -122,7 +122,7 @@ inline constexpr std::array<ParamSpec, 23> kDetectorParamSpecs{{
     {.name = "centre_circle", .member = &DetectorParams::centre_circle,
      .help = "fit the centre circle to short stripe pieces of a second drawing (runs the stripes stage too)"},
     {.name = "piece_length", .member = &DetectorParams::piece_length, .range = {3, 10000},
-     .unit = "px", .help = "shortest piece of the second drawing (intersections, centre circle)", .slider = {5, 60}},
+     .unit = "px", .help = "shortest piece of the second drawing (the centre circle's, the junctions' too)", .slider = {5, 60}},
     {.name = "dark_field", .member = &DetectorParams::dark_field, .range = {0, 765},
      .help = "a field darker than this (R + G + B) lowers the gradient threshold in proportion; 0: off",
      .slider = {0, 765}},

@@ -1,9 +1,10 @@
 #pragma once
 // L, T and X junctions of painted lines, from stripe centre lines (stripes.hpp). LineDetector
-// passes those of a second drawing of the frame, whose pieces may be shorter than the detector's
-// minimum length (DetectorParams::piece_length: a line running into a crossing stops short of
-// it), less those on the centre circle (centre_circle.hpp), whose chords bend into each other
-// and cross the halfway line.
+// passes its own segments that are straight stripes (Shape::Straight: a chord of the centre
+// circle bows) and, when the centre circle is on, the pieces of its second drawing, which may be
+// shorter than the detector's minimum length (DetectorParams::piece_length: a line running into
+// a crossing stops short of it), less those on the circle (centre_circle.hpp), whose chords bend
+// into each other and cross the halfway line.
 //
 // Two centre lines at more than `intersection_min_angle` degrees to each other meet where their
 // infinite lines cross, when that point lies on both or within a reach of one of their ends:

@@ -34,6 +34,12 @@
 // set (measured in docs/detector.md: requiring twins costs recall and buys no precision).
 // Every other Marking segment, and every one when the frame shows no field, becomes None, so
 // every consumer of labels sees the check. Buffers are the caller's: no allocation once warm.
+//
+// A caller that wants straight lines only (the junctions: Shape::Straight) gets no candidate
+// whose paint bows from its edge's line by more than 1 px or a fifth of its width, whichever is
+// more (the mean offset of its middle profiles, a quarter to three quarters along, from the
+// robust line through all, less that of the outer ones): a chord of a curve, such as the centre
+// circle's, bows by 1.3 to 4.5 px; a straight line a few px wide by under 0.9.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -57,6 +63,7 @@ struct StripeWorkspace {
     // profiles' centres, since a line seen in perspective widens towards the camera and its
     // centre drifts from the edge. The median width, px.
     float offset0 = 0, offset1 = 0, width = 0;
+    float bow = 0;  // px: how far the middle profiles' centres lie off that line, beyond the outer ones'
     bool paired = false;
   };
   std::vector<Candidate> candidates;
@@ -73,12 +80,15 @@ struct StripeWorkspace {
 // turf (docs/detector.md); the studio proposes such lines as paint (gui/model/proposal_gate.hpp).
 enum class ThinLines : std::uint8_t { Refused, Accepted };
 
+// Which stripes a caller takes: any, or straight ones only (see above).
+enum class Shape : std::uint8_t { Any, Straight };
+
 // `bgr8`: the frame the segments were detected in (8-bit BGR; anything else keeps no marking).
 // `field`: the frame's field colour (LineDetector measures it); empty: no turf anywhere.
 // Relabels `segments` in place and writes one Marking per stripe into `out` (cleared first).
 void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<Segment> segments,
                   const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out,
-                  ThinLines thin = ThinLines::Refused);
+                  ThinLines thin = ThinLines::Refused, Shape shape = Shape::Any);
 
 // Every segment checked as a stripe as though its colours made it a marking, whatever its label:
 // what the stripes stage would keep of it under any thresholds. Calibration fits the markings on
