@@ -3,8 +3,9 @@
 # synthetic frames whose truth comes from their field and camera (fieldlines eval --gt
 # --features), as one Markdown table on stdout. Per scene, 40 frames in all five lights per
 # seed; thresholds built in, or calibrated label-free on seed 1. Seeds 4242 and 777 are held
-# out from tuning the stages; 9001 and 9002 were scored once, on a finished build. The last row
-# counts paint from 0.5 px wide as visible instead of 1 px (--min-width).
+# out from tuning the stages; 9001 and 9002 were scored once, on a finished build. Every stage on,
+# then without the centre circle (the junctions from the detector's own drawing alone). The last
+# row counts paint from 0.5 px wide as visible instead of 1 px (--min-width).
 #   usage: bash scripts/features_table.sh [OUT_DIR]      (default build/features-table)
 #   env:   FIELDLINES_BIN (default build/release/app/cli/fieldlines), N (frames per set, 40)
 set -euo pipefail
@@ -21,25 +22,45 @@ for scene in ssl kid; do
   "$bin" calibrate "$out/${scene}_1" -o "$out/${scene}_cal.json" --quiet >/dev/null
 done
 
-# One row: the pooled line of eval's features table, after the row's own columns.
+# The same thresholds with the stripes and junctions on and the centre circle off (no second
+# drawing): what eval scores for "junctions only".
+without_circle() {
+  python3 - "$1" "$2" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1]))
+t.setdefault("detector", {}).update({"stripes": True, "intersections": True, "centre_circle": False})
+json.dump(t, open(sys.argv[2], "w"), indent=2)
+PY
+}
+without_circle assets/default_thresholds.json "$out/builtin_lines.json"
+for scene in ssl kid; do without_circle "$out/${scene}_cal.json" "$out/${scene}_cal_lines.json"; done
+
+# One row: the pooled line of eval's features table, after the row's own columns. Every feature
+# stage on (--features) unless the thresholds given choose the stages.
 row() {
   local label="$1"
   shift
-  "$bin" eval "$@" --features --markdown | tail -1 |
+  local features=--features
+  [[ "$*" == *_lines.json* ]] && features=
+  "$bin" eval "$@" $features --markdown | tail -1 |
     awk -F'|' -v label="$label" '{printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
       label, $4, $5, $6, $7, $8, $9, $11, $12, $13}' | sed 's/  */ /g'
 }
 
-echo "| frames | thresholds | scene | true junctions | detected | precision | recall | type correct | circles found | wrong ellipses | boundary within 4 px | markings on line |"
-echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
-for pair in "4242 777 held out" "9001 9002 fresh"; do
-  read -r a b kind <<<"$pair"
-  row "seeds $a + $b ($kind) | built-in | both" --gt "$out/ssl_$a" "$out/ssl_$b" "$out/kid_$a" "$out/kid_$b"
-  for scene in kid ssl; do
-    name="$([[ $scene == kid ]] && echo Kid || echo SSL)"
-    row "seeds $a + $b ($kind) | calibrated on seed 1 | $name" --gt "$out/${scene}_$a" "$out/${scene}_$b" \
-      --thresholds "$out/${scene}_cal.json"
+echo "| frames | stages | thresholds | scene | true junctions | detected | precision | recall | type correct | circles found | wrong ellipses | boundary within 4 px | markings on line |"
+echo "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+for stages in "every stage|" "no centre circle|_lines"; do
+  IFS='|' read -r what suffix <<<"$stages"
+  for pair in "4242 777 held out" "9001 9002 fresh"; do
+    read -r a b kind <<<"$pair"
+    row "seeds $a + $b ($kind) | $what | built-in | both" --gt "$out/ssl_$a" "$out/ssl_$b" "$out/kid_$a" "$out/kid_$b" \
+      ${suffix:+--thresholds "$out/builtin$suffix.json"}
+    for scene in kid ssl; do
+      name="$([[ $scene == kid ]] && echo Kid || echo SSL)"
+      row "seeds $a + $b ($kind) | $what | calibrated on seed 1 | $name" --gt "$out/${scene}_$a" "$out/${scene}_$b" \
+        --thresholds "$out/${scene}_cal$suffix.json"
+    done
   done
 done
-row "seeds 4242 + 777, paint from 0.5 px visible | built-in | both" \
+row "seeds 4242 + 777, paint from 0.5 px visible | every stage | built-in | both" \
   --gt "$out/ssl_4242" "$out/ssl_777" "$out/kid_4242" "$out/kid_777" --min-width 0.5

@@ -91,8 +91,8 @@ TEST_F(CliBench, JsonListsAllSevenRowsInBothOrders) {
     else EXPECT_GT(segments, 0) << d;
   }
   EXPECT_EQ(names,
-            (std::vector<std::string>{"fieldlines", "fieldlines+light", "fieldlines+stripes", "fieldlines+features",
-                                      "edlines", "fld", "lsd", "gradients", "floor"}));
+            (std::vector<std::string>{"fieldlines", "fieldlines+light", "fieldlines+stripes", "fieldlines+junctions",
+                                      "fieldlines+features", "edlines", "fld", "lsd", "gradients", "floor"}));
   // The light adaptation finds the same segments (the field's colour is the reference's here).
   EXPECT_EQ(rows["fieldlines+light"]["segments_per_image"], rows["fieldlines"]["segments_per_image"]);
   // Ours against ours is 1 in every order and round.
@@ -113,6 +113,8 @@ TEST_F(CliBench, JsonListsAllSevenRowsInBothOrders) {
   expect_ratio_summary(j.at("gradients_over_floor"));
   // Junctions, circle and boundary add features, not segments: the stripes' segments.
   EXPECT_EQ(rows["fieldlines+features"]["segments_per_image"], rows["fieldlines+stripes"]["segments_per_image"]);
+  EXPECT_EQ(rows["fieldlines+junctions"]["segments_per_image"], rows["fieldlines+stripes"]["segments_per_image"]);
+  expect_ratio_summary(j.at("junctions_over_plain"));
   expect_ratio_summary(j.at("features_over_plain"));
 
   // The table shows both orders, the worse ratio with its spread and the target checks on it.

@@ -32,10 +32,11 @@ constexpr const char* kHelp = R"(usage: fieldlines bench [options] PATH...
 Times, in this process, on the same colour images and on one thread (cv::setNumThreads(1);
 our rows may take more with --detector-threads):
   fieldlines  our LineDetector: ELSED + colour gradients + classification
-  fieldlines+light, fieldlines+stripes, fieldlines+features
+  fieldlines+light, fieldlines+stripes, fieldlines+junctions, fieldlines+features
               the same with the per-frame light adaptation, with the stripes stage (every
-              marking checked and measured across its width), or with every field feature
-              (stripes, L/T/X junctions, centre circle, field boundary)
+              marking checked and measured across its width), with the stripes, field boundary
+              and L/T/X junctions (the features of the detector's own drawing), or with every
+              field feature (those and the centre circle, which draws the frame a second time)
   edlines     OpenCV ximgproc EdgeDrawing in EDLines mode (detectEdges + detectLines)
   fld         OpenCV ximgproc FastLineDetector
   lsd         OpenCV LineSegmentDetector
@@ -54,7 +55,8 @@ summed over the round's calls (the median call would be one frame's, and hide wh
 costs on the busier frames); the median over rounds. "worse" is the larger of the two orders
 (the less flattering to us), with its min-max over rounds. The targets ours <= 0.4 x edlines
 and ours <= 1.5 x floor (--floor-target) are checked against the worse ratio; gradients/floor
-and features/fieldlines (what the field features cost, target <= 1.2) are reported the same way.
+junctions/fieldlines and features/fieldlines (what the field features cost, target <= 1.2)
+are reported the same way.
 PATH is an image or a folder; images that fail to load are reported and skipped (exit 1).
 
 options:
@@ -85,7 +87,7 @@ JSON: {"images":N, "scale":{"width","height"} (with --scale only), "detector_thr
     "segments_per_image", "block":{"mean_ms","median_ms","p90_ms"}, "interleaved":{likewise},
     "ours_over_this":RATIO}],
   "targets":{"edlines":TARGET, "floor":TARGET}, "gradients_over_floor":RATIO,
-  "features_over_plain":RATIO}
+  "junctions_over_plain":RATIO, "features_over_plain":RATIO}
   RATIO  = {"block", "interleaved", "worse", "worse_order" ("block" or "interleaved"), "min", "max"}
            (min and max: the worse order's ratio over rounds)
   TARGET = {"ratio" (the worse ours/this), "limit", "met", "order", "min", "max"}
@@ -239,6 +241,10 @@ int cmd_bench(const Args& args) {
   std::printf("gradients/floor = %s (block %.2f, interleaved %.2f: our fused gradient pass against OpenCV's blur + "
               "Sobel)\n",
               worse_text(gradients).c_str(), gradients.by_order[0], gradients.by_order[1]);
+  const peers::RatioSummary junctions = peers::ratio_in_both_orders(row("fieldlines+junctions"), ours);
+  std::printf("junctions/fieldlines = %s (block %.2f, interleaved %.2f: stripes, field boundary and junctions "
+              "against none; target <= 1.2)\n",
+              worse_text(junctions).c_str(), junctions.by_order[0], junctions.by_order[1]);
   const peers::RatioSummary features = peers::ratio_in_both_orders(row("fieldlines+features"), ours);
   std::printf("features/fieldlines = %s (block %.2f, interleaved %.2f: every field feature on against none; "
               "target <= 1.2)\n",
@@ -255,6 +261,7 @@ int cmd_bench(const Args& args) {
     j["detectors"] = detectors_json;
     j["targets"] = {{"edlines", target_json(vs_edlines)}, {"floor", target_json(vs_floor)}};
     j["gradients_over_floor"] = ratio_json(gradients);
+    j["junctions_over_plain"] = ratio_json(junctions);
     j["features_over_plain"] = ratio_json(features);
     write_output_file(*json_out, j.dump(2) + "\n");
     std::printf("results written to %s\n", json_out->string().c_str());

@@ -48,6 +48,18 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
                    return segments->size();
                  }});
 
+  // The stripes, the field boundary and the junctions, not the centre circle: the field features
+  // from the detector's own drawing (the circle draws the frame a second time).
+  DetectorParams lines = with_every_feature(params);
+  lines.centre_circle = false;
+  auto ours_junctions = std::make_shared<LineDetector>(lines, thresholds);
+  ours_junctions->set_find_field_boundary(true);
+  out.push_back({"fieldlines+junctions", "the same with the stripes, field boundary and junctions (no circle)",
+                 [ours_junctions, segments](const cv::Mat& bgr) {
+                   ours_junctions->detect(bgr, *segments);
+                   return segments->size();
+                 }});
+
   // Every field feature on (field_features.hpp): stripes, junctions, centre circle, boundary.
   auto ours_features = std::make_shared<LineDetector>(with_every_feature(params), thresholds);
   ours_features->set_find_field_boundary(true);

@@ -17,7 +17,7 @@ namespace fieldlines::peers {
 
 struct TimedDetector {
   std::string name;  // "fieldlines", "fieldlines+light", "fieldlines+stripes",
-                     // "fieldlines+features", "edlines", "fld", "lsd",
+                     // "fieldlines+junctions", "fieldlines+features", "edlines", "fld", "lsd",
                      // "gradients", "floor"
   std::string what;  // one line for tables and --help
   // Runs on a BGR image and returns the number of segments found. Owns its buffers and reuses
