@@ -65,14 +65,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (f.intersections.size() != fresh_striped.features().intersections.size() ||
         f.ellipses.size() != fresh_striped.features().ellipses.size() || f.ellipses.size() > 1)
       __builtin_trap();
-    for (const fieldlines::Intersection& j : f.intersections) {
-      if (!std::isfinite(j.x) || !std::isfinite(j.y) || j.num_rays < 2 || j.num_rays > 4 || !(j.confidence >= 0) ||
-          j.confidence > 1)
-        __builtin_trap();
-      for (int k = 0; k < j.num_rays; ++k)
-        if (!(j.heading_rays[k] >= 0) || !(j.heading_rays[k] < 6.2832f) || (k > 0 && j.heading_rays[k] < j.heading_rays[k - 1]))
+    const auto check_junctions = [](const std::vector<fieldlines::Intersection>& junctions) {
+      for (const fieldlines::Intersection& j : junctions) {
+        if (!std::isfinite(j.x) || !std::isfinite(j.y) || j.num_rays < 2 || j.num_rays > 4 || !(j.confidence >= 0) ||
+            j.confidence > 1)
           __builtin_trap();
-    }
+        for (int k = 0; k < j.num_rays; ++k)
+          if (!(j.heading_rays[k] >= 0) || !(j.heading_rays[k] < 6.2832f) ||
+              (k > 0 && j.heading_rays[k] < j.heading_rays[k - 1]))
+            __builtin_trap();
+      }
+    };
+    check_junctions(f.intersections);
+    // The junctions without the circle: the detector's own straight stripes, no second drawing.
+    static const fieldlines::DetectorParams kLines = [] {
+      fieldlines::DetectorParams p = kStripes;
+      p.centre_circle = false;
+      return p;
+    }();
+    static fieldlines::LineDetector lines(kLines);
+    lines.detect(image);
+    if (!lines.features().ellipses.empty()) __builtin_trap();
+    check_junctions(lines.features().intersections);
     for (const fieldlines::MarkingEllipse& e : f.ellipses)
       if (!std::isfinite(e.cx) || !std::isfinite(e.cy) || !(e.width > 0) || !(e.height > 0) || !std::isfinite(e.width) ||
           !std::isfinite(e.height) || !std::isfinite(e.angle_deg) || !(e.confidence > 0) || e.confidence > 1)
