@@ -166,7 +166,7 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
   // blur can cut.
   std::vector<int>& rows = impl_->piece_rows;
   rows.clear();
-  if (!f.field_boundary.empty()) {
+  if (params_.centre_circle && !f.field_boundary.empty()) {
     const float margin = std::max(6.f, 0.03f * float(bgr.rows));  // place_of()'s band along it
     rows.resize(static_cast<std::size_t>(bgr.cols));
     for (int x = 0; x < bgr.cols; ++x)
