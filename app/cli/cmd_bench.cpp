@@ -237,18 +237,17 @@ int cmd_bench(const Args& args) {
   for (const TargetCheck* t : {&vs_edlines, &vs_floor})
     std::printf("  %s = %s (<= %.2f: %s)\n", t->label.c_str(), worse_text(t->ratio).c_str(), t->limit,
                 t->met() ? "met" : "NOT met");
+  // A ratio reported beside the targets: "name = worse (block b, interleaved i: what)".
+  const auto report = [](const char* name, const peers::RatioSummary& r, const char* what) {
+    std::printf("%s = %s (block %.2f, interleaved %.2f: %s)\n", name, worse_text(r).c_str(), r.by_order[0],
+                r.by_order[1], what);
+  };
   const peers::RatioSummary gradients = peers::ratio_in_both_orders(row("gradients"), row("floor"));
-  std::printf("gradients/floor = %s (block %.2f, interleaved %.2f: our fused gradient pass against OpenCV's blur + "
-              "Sobel)\n",
-              worse_text(gradients).c_str(), gradients.by_order[0], gradients.by_order[1]);
+  report("gradients/floor", gradients, "our fused gradient pass against OpenCV's blur + Sobel");
   const peers::RatioSummary junctions = peers::ratio_in_both_orders(row("fieldlines+junctions"), ours);
-  std::printf("junctions/fieldlines = %s (block %.2f, interleaved %.2f: stripes, field boundary and junctions "
-              "against none; target <= 1.2)\n",
-              worse_text(junctions).c_str(), junctions.by_order[0], junctions.by_order[1]);
+  report("junctions/fieldlines", junctions, "stripes, field boundary and junctions against none; target <= 1.2");
   const peers::RatioSummary features = peers::ratio_in_both_orders(row("fieldlines+features"), ours);
-  std::printf("features/fieldlines = %s (block %.2f, interleaved %.2f: every field feature on against none; "
-              "target <= 1.2)\n",
-              worse_text(features).c_str(), features.by_order[0], features.by_order[1]);
+  report("features/fieldlines", features, "every field feature on against none; target <= 1.2");
 
   if (json_out) {
     nlohmann::ordered_json j{{"images", images.size()}};

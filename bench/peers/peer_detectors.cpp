@@ -20,33 +20,28 @@ struct GreyLines {
 std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, const Thresholds& thresholds) {
   std::vector<TimedDetector> out;
 
-  auto ours = std::make_shared<LineDetector>(params, thresholds);
   auto segments = std::make_shared<std::vector<Segment>>();
-  out.push_back({"fieldlines", "fieldlines LineDetector: ELSED + colour gradients + classification",
-                 [ours, segments](const cv::Mat& bgr) {
-                   ours->detect(bgr, *segments);
-                   return segments->size();
-                 }});
+  // One of our rows: `detector` into the shared segment buffer.
+  const auto ours = [&](const char* name, const char* what, std::shared_ptr<LineDetector> detector) {
+    out.push_back({name, what, [detector, segments](const cv::Mat& bgr) {
+                     detector->detect(bgr, *segments);
+                     return segments->size();
+                   }});
+  };
+  ours("fieldlines", "fieldlines LineDetector: ELSED + colour gradients + classification",
+       std::make_shared<LineDetector>(params, thresholds));
 
   // The robot's per-frame light adaptation on (light.hpp): what it adds to a detect.
   Thresholds adapted = thresholds;
   adapted.light = {true, {60, 130, 60}};
-  auto ours_light = std::make_shared<LineDetector>(params, adapted);
-  out.push_back({"fieldlines+light", "the same with per-frame light adaptation (field colour, one gain)",
-                 [ours_light, segments](const cv::Mat& bgr) {
-                   ours_light->detect(bgr, *segments);
-                   return segments->size();
-                 }});
+  ours("fieldlines+light", "the same with per-frame light adaptation (field colour, one gain)",
+       std::make_shared<LineDetector>(params, adapted));
 
   // The stripes stage on (stripes.hpp): what checking every marking across its width adds.
   DetectorParams striped = params;
   striped.stripes = true;
-  auto ours_stripes = std::make_shared<LineDetector>(striped, thresholds);
-  out.push_back({"fieldlines+stripes", "the same with the stripes stage (profiles across every marking)",
-                 [ours_stripes, segments](const cv::Mat& bgr) {
-                   ours_stripes->detect(bgr, *segments);
-                   return segments->size();
-                 }});
+  ours("fieldlines+stripes", "the same with the stripes stage (profiles across every marking)",
+       std::make_shared<LineDetector>(striped, thresholds));
 
   // The stripes, the field boundary and the junctions, not the centre circle: the field features
   // from the detector's own drawing (the circle draws the frame a second time).
@@ -54,20 +49,13 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
   lines.centre_circle = false;
   auto ours_junctions = std::make_shared<LineDetector>(lines, thresholds);
   ours_junctions->set_find_field_boundary(true);
-  out.push_back({"fieldlines+junctions", "the same with the stripes, field boundary and junctions (no circle)",
-                 [ours_junctions, segments](const cv::Mat& bgr) {
-                   ours_junctions->detect(bgr, *segments);
-                   return segments->size();
-                 }});
+  ours("fieldlines+junctions", "the same with the stripes, field boundary and junctions (no circle)", ours_junctions);
 
   // Every field feature on (field_features.hpp): stripes, junctions, centre circle, boundary.
   auto ours_features = std::make_shared<LineDetector>(with_every_feature(params), thresholds);
   ours_features->set_find_field_boundary(true);
-  out.push_back({"fieldlines+features", "the same with every field feature (stripes, junctions, circle, boundary)",
-                 [ours_features, segments](const cv::Mat& bgr) {
-                   ours_features->detect(bgr, *segments);
-                   return segments->size();
-                 }});
+  ours("fieldlines+features", "the same with every field feature (stripes, junctions, circle, boundary)",
+       ours_features);
 
   auto ed = cv::ximgproc::createEdgeDrawing();
   auto ed_state = std::make_shared<GreyLines>();
