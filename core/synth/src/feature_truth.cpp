@@ -98,13 +98,17 @@ FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask, float 
   const FieldModel field = make_field({.scene = truth.scene, .line_width = truth.line_width});
   const Camera camera(truth.intrinsics, truth.pose);
   const Intrinsics& k = truth.intrinsics;
+  // Whether a visible painted line lies at (x, y): within 3 px (or its width), at least
+  // min_width_px wide there (thinner paint is too thin to see).
+  const auto paint_visible_at = [&](float x, float y) {
+    float width = 0;
+    return nearest_paint(truth, x, y, "", width) <= std::max(3.f, width) && width >= min_width_px;
+  };
   for (const WorldJunction& j : world_junctions(field)) {
     const auto centre = camera.project(Vector3d(j.at.x(), j.at.y(), 0));
     if (!centre || !inside(*centre, k)) continue;
     Intersection i{.x = float(centre->x()), .y = float(centre->y()), .confidence = 1};
-    float width = 0;
-    const double off = nearest_paint(truth, i.x, i.y, "", width);
-    if (off > std::max(3.f, width) || width < min_width_px) {  // hidden, or too thin to see
+    if (!paint_visible_at(i.x, i.y)) {  // hidden, or too thin to see
       out.ignored.push_back(i);
       continue;
     }
@@ -116,9 +120,7 @@ FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask, float 
         if ((*p - *centre).norm() >= kArmPx) {
           // An arm shows where its own paint is visible there: at an X of a near line and a
           // crossing line seen edge-on, the centre's paint is the near line's.
-          float arm_width = 0;
-          const double arm_off = nearest_paint(truth, float(p->x()), float(p->y()), "", arm_width);
-          if (arm_off <= std::max(3.f, arm_width) && arm_width >= min_width_px && i.num_rays < 4)
+          if (paint_visible_at(float(p->x()), float(p->y())) && i.num_rays < 4)
             i.heading_rays[static_cast<std::size_t>(i.num_rays++)] = heading(*p - *centre);
           break;
         }
