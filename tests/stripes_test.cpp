@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "painted_field.hpp"
+#include "truth_distance.hpp"
 
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/light.hpp"
@@ -20,7 +21,7 @@
 namespace fieldlines {
 namespace {
 
-using test::kDark, test::kPaint, test::kTurf, test::noisy;
+using test::distance_to, test::kDark, test::kPaint, test::kTurf, test::noisy;
 
 DetectorParams stripes_on(bool require_twin = false) {
   DetectorParams p;
@@ -253,21 +254,6 @@ TEST(Stripes, OnePassFlagsWhatTheTwoRunsFlag) {
   }
   EXPECT_GT(stripes, 20);
   EXPECT_GT(thin_only, 0) << "the frames must hold lines that only thin lines accepted take";
-}
-
-// From (x, y) to the nearest polyline of the truth named `name`.
-float distance_to(const synth::GroundTruth& truth, std::string_view name, float x, float y) {
-  float best = 1e9f;
-  for (const synth::TruthFeature& f : truth.features) {
-    if (f.name != name) continue;
-    for (std::size_t i = 1; i < f.points.size(); ++i) {
-      const synth::TruthPoint &a = f.points[i - 1], &b = f.points[i];
-      const float dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-      const float t = len2 > 0 ? std::clamp(((x - a.x) * dx + (y - a.y) * dy) / len2, 0.f, 1.f) : 0.f;
-      best = std::min(best, std::hypot(x - a.x - t * dx, y - a.y - t * dy));
-    }
-  }
-  return best;
 }
 
 // Shape::Straight on the detector's segments of synthetic Kid frames: of those along the centre

@@ -10,6 +10,7 @@
 
 #include "fieldlines/synth/feature_truth.hpp"
 #include "fieldlines/synth/synth.hpp"
+#include "truth_distance.hpp"
 
 namespace fieldlines::synth {
 namespace {
@@ -26,18 +27,6 @@ const std::vector<GroundTruth>& kid_frames() {
     return out;
   }();
   return frames;
-}
-
-// From (x, y) to a polyline of the truth.
-float distance(const TruthFeature& f, float x, float y) {
-  float best = 1e9f;
-  for (std::size_t i = 1; i < f.points.size(); ++i) {
-    const TruthPoint &a = f.points[i - 1], &b = f.points[i];
-    const float dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-    const float t = len2 > 0 ? std::clamp(((x - a.x) * dx + (y - a.y) * dy) / len2, 0.f, 1.f) : 0.f;
-    best = std::min(best, std::hypot(x - a.x - t * dx, y - a.y - t * dy));
-  }
-  return best;
 }
 
 FieldFeatures as_detected(const FeatureTruth& t) {
@@ -150,8 +139,8 @@ TEST(FeatureTruth, PaintThinnerThanTheMinimumWidthShowsNoArmAndNoCircle) {
           float nearest_other = 1e9f;
           for (std::size_t g = 0; g < truth.features.size(); ++g)
             if (g != f && truth.features[g].label == Label::Marking)
-              nearest_other = std::min(nearest_other, distance(truth.features[g], x, y));
-          const float to_thin = distance(truth.features[f], x, y);
+              nearest_other = std::min(nearest_other, test::distance_to(truth.features[g], x, y));
+          const float to_thin = test::distance_to(truth.features[f], x, y);
           EXPECT_FALSE(to_thin < 2 && to_thin < nearest_other) << truth.features[f].name << " at " << x << ", " << y;
         }
       if (truth.features[f].name != "centre circle" || !original.circle || original.circle->visible_share <= 0) continue;
