@@ -35,32 +35,31 @@ PY
 without_circle assets/default_thresholds.json "$out/builtin_lines.json"
 for scene in ssl kid; do without_circle "$out/${scene}_cal.json" "$out/${scene}_cal_lines.json"; done
 
-# One row: the pooled line of eval's features table, after the row's own columns. Every feature
-# stage on (--features) unless the thresholds given choose the stages.
+# One row: the pooled line of eval's features table, after the row's own columns (the eval
+# arguments choose the stages: --features, or a thresholds file's).
 row() {
   local label="$1"
   shift
-  local features=--features
-  [[ "$*" == *_lines.json* ]] && features=
-  "$bin" eval "$@" $features --markdown | tail -1 |
+  "$bin" eval "$@" --markdown | tail -1 |
     awk -F'|' -v label="$label" '{printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
       label, $4, $5, $6, $7, $8, $9, $11, $12, $13}' | sed 's/  */ /g'
 }
 
 echo "| frames | stages | thresholds | scene | true junctions | detected | precision | recall | type correct | circles found | wrong ellipses | boundary within 4 px | markings on line |"
 echo "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
-for stages in "every stage|" "no centre circle|_lines"; do
-  IFS='|' read -r what suffix <<<"$stages"
+# Every stage (--features over the thresholds), then the thresholds' own stages: no circle.
+for stages in "every stage|--features|" "no centre circle||_lines"; do
+  IFS='|' read -r what features suffix <<<"$stages"
   for pair in "4242 777 held out" "9001 9002 fresh"; do
     read -r a b kind <<<"$pair"
     row "seeds $a + $b ($kind) | $what | built-in | both" --gt "$out/ssl_$a" "$out/ssl_$b" "$out/kid_$a" "$out/kid_$b" \
-      ${suffix:+--thresholds "$out/builtin$suffix.json"}
+      ${suffix:+--thresholds "$out/builtin$suffix.json"} $features
     for scene in kid ssl; do
       name="$([[ $scene == kid ]] && echo Kid || echo SSL)"
       row "seeds $a + $b ($kind) | $what | calibrated on seed 1 | $name" --gt "$out/${scene}_$a" "$out/${scene}_$b" \
-        --thresholds "$out/${scene}_cal$suffix.json"
+        --thresholds "$out/${scene}_cal$suffix.json" $features
     done
   done
 done
 row "seeds 4242 + 777, paint from 0.5 px visible | every stage | built-in | both" \
-  --gt "$out/ssl_4242" "$out/ssl_777" "$out/kid_4242" "$out/kid_777" --min-width 0.5
+  --gt "$out/ssl_4242" "$out/ssl_777" "$out/kid_4242" "$out/kid_777" --min-width 0.5 --features
