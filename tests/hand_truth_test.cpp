@@ -2,6 +2,7 @@
 // their features become the truth GtEdges scores against, and bad files are clear errors.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -41,6 +42,23 @@ TEST(HandTruth, FeaturesBecomeTheScoredTruth) {
   EXPECT_EQ(edges.truth_label(s), fl::Label::Boundary);
   s.y0 = s.y1 = 80;
   EXPECT_EQ(edges.truth_label(s), fl::Label::None);
+}
+
+TEST(HandTruth, FieldBoundaryRowsFollowTheDrawingAndStopWhereItStops) {
+  nlohmann::json j = one_line();
+  // Two polylines with a gap (an occluder), the second running past the frame's right edge.
+  j["features"][2]["points"] = nlohmann::json::parse("[[0, 10, 0], [50, 20, 0]]");
+  j["features"].push_back(nlohmann::json::parse(
+      R"({"label": "field_boundary", "name": "right of a robot", "points": [[120, 30, 0], [1e9, 30, 0]]})"));
+  const std::vector<float> rows = fl::synth::field_boundary_rows(fl::synth::hand_truth_from_json(j, "t.json"));
+  ASSERT_EQ(rows.size(), 200u);
+  EXPECT_FLOAT_EQ(rows[0], 10);
+  EXPECT_FLOAT_EQ(rows[25], 15);  // linear between the points
+  EXPECT_FLOAT_EQ(rows[50], 20);
+  EXPECT_EQ(rows[51], -1);  // the gap counts neither way
+  EXPECT_EQ(rows[119], -1);
+  EXPECT_NEAR(rows[120], 30, 1e-3);
+  EXPECT_NEAR(rows[199], 30, 1e-3);
 }
 
 TEST(HandTruth, BadFilesAreClearErrors) {

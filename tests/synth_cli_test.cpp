@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "shared_data.hpp"
 
@@ -124,6 +126,37 @@ TEST_F(SynthCli, AutolabelAndEvalAgainstTruth) {
   const CliRun bad = run("eval --gt " + (dir_ / "empty").string(), dir_);
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("no image with ground truth"), std::string::npos) << bad.err;
+}
+
+// eval --hand's second table: the detected field boundary against the drawn one, per column the
+// drawing spans; a frame without field counts its height on each of them.
+TEST_F(SynthCli, EvalHandScoresTheFieldBoundaryAgainstTheDrawnOne) {
+  const fs::path data = dir_ / "data", truth = dir_ / "truth";
+  fs::create_directories(data);
+  fs::create_directories(truth);
+  cv::Mat field(120, 200, CV_8UC3, cv::Scalar(60, 60, 60));            // a grey wall...
+  field.rowRange(40, 120).setTo(cv::Scalar(40, 140, 40));             // ...above turf from row 40
+  cv::line(field, {10, 80}, {190, 80}, cv::Scalar(255, 255, 255), 4);  // and a painted line
+  ASSERT_TRUE(cv::imwrite((data / "field.png").string(), field));
+  ASSERT_TRUE(cv::imwrite((data / "wall.png").string(), cv::Mat(120, 200, CV_8UC3, cv::Scalar(60, 60, 60))));
+  const auto write_truth = [&](const std::string& image, const nlohmann::json& boundary) {
+    const nlohmann::json j = {
+        {"schema", "fieldlines-hand-truth"}, {"version", 1}, {"image", image}, {"width", 200}, {"height", 120},
+        {"annotated_by", "test"},
+        {"features", {{{"label", "marking"}, {"name", "line"}, {"points", {{10, 80, 4}, {190, 80, 4}}}},
+                      {{"label", "field_boundary"}, {"name", "boundary"}, {"points", boundary}}}}};
+    std::ofstream(truth / (fs::path(image).stem().string() + ".json")) << j.dump();
+  };
+  write_truth("field.png", {{0, 39.5, 0}, {199, 39.5, 0}});  // all 200 columns
+  write_truth("wall.png", {{0, 50, 0}, {99, 50, 0}});        // 100 columns, and no field to find
+  const CliRun eval =
+      run("eval --hand " + truth.string() + " --data " + data.string() + " --json " + (dir_ / "s.json").string(), dir_);
+  ASSERT_EQ(eval.code, 0) << eval.err;
+  EXPECT_NE(eval.out.find("median px"), std::string::npos) << eval.out;
+  const auto score = nlohmann::json::parse(slurp(dir_ / "s.json"))["total"]["hand_field_boundary"];
+  EXPECT_EQ(score["columns"], 300);
+  EXPECT_EQ(score["within_2pct_height"], 200) << eval.out;
+  EXPECT_LE(score["median_error_px"].get<double>(), 2.4) << eval.out;
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 // `fieldlines eval --gt DIR`: detection + classification scored against synthetic ground truth.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -35,7 +37,9 @@ Detects and classifies the segments of every image of synthetic sets (made by `f
 synth`; each image's truth is DIR/truth/<name>.json) and scores them against the exact ground
 truth, per scene and lighting condition and pooled. With --hand, the images are real frames
 under DATA and their truth is drawn by hand (DIR/<name>.json, schema fieldlines-hand-truth, as
-in tests/data/hand_truth); the rows are the folders. Scores:
+in tests/data/hand_truth); the rows are the folders, and a second table scores the detected
+field boundary against the drawn one on the columns it spans (within 4 px, within 2 % of the
+frame's height, median error; a frame where no field was found counts its height). Scores:
   precision  predicted segments of a class whose truth label agrees (a segment's truth label is
              the class whose line edges it follows for >= 60% of its length, within 2.5 px and
              10 degrees; otherwise none)
@@ -70,9 +74,35 @@ examples:
   fieldlines eval --hand tests/data/hand_truth/msl-bangkok --data ../shared/data --thresholds msl.json
 )";
 
+// The detected field boundary against a hand-drawn one, per column the hand's polylines span: the
+// error in px (the frame's height where the detector found no field), and how many are within
+// 2 % of the frame's height (a real frame's drawing is accurate to about 1.5 px).
+struct HandBoundary {
+  std::vector<float> errors_px;
+  long within_share = 0;
+  static constexpr float kShare = 0.02f;
+  HandBoundary& operator+=(const HandBoundary& o) {
+    errors_px.insert(errors_px.end(), o.errors_px.begin(), o.errors_px.end());
+    within_share += o.within_share;
+    return *this;
+  }
+};
+
+HandBoundary score_hand_boundary(const std::vector<float>& truth_rows, const FieldBoundary& detected, int height) {
+  HandBoundary out;
+  for (std::size_t x = 0; x < truth_rows.size(); ++x) {
+    if (truth_rows[x] < 0) continue;
+    const float e = detected.empty() ? float(height) : std::abs(detected.y_at(float(x)) - truth_rows[x]);
+    out.errors_px.push_back(e);
+    out.within_share += e <= HandBoundary::kShare * float(height);
+  }
+  return out;
+}
+
 struct Group {
   GtScore score;
   synth::FeatureScore features;
+  HandBoundary hand_boundary;
   double detect_ms = 0;
 };
 
@@ -118,6 +148,27 @@ void print_feature_row(bool markdown, const std::string& scene, const std::strin
   }
 }
 
+double median(std::vector<float> v) {
+  if (v.empty()) return 0;
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  if (v.size() % 2 == 1) return *mid;
+  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
+}
+
+void print_hand_boundary_row(bool markdown, const std::string& folder, const Group& g) {
+  const HandBoundary& b = g.hand_boundary;
+  const long n = static_cast<long>(b.errors_px.size());
+  const float px = synth::FeatureScoreParams{}.max_boundary_px;
+  const long within_px = std::count_if(b.errors_px.begin(), b.errors_px.end(), [&](float e) { return e <= px; });
+  const std::string w4 = fmt(n > 0 ? double(within_px) / n : 0, n > 0),
+                    ws = fmt(n > 0 ? double(b.within_share) / n : 0, n > 0), med = fmt(median(b.errors_px), n > 0);
+  if (markdown)
+    std::printf("| %s | %d | %ld | %s | %s | %s |\n", folder.c_str(), g.score.images, n, w4.c_str(), ws.c_str(), med.c_str());
+  else
+    std::printf("%-12s %6d %8ld %10s %10s %10s\n", folder.c_str(), g.score.images, n, w4.c_str(), ws.c_str(), med.c_str());
+}
+
 nlohmann::json to_json(const Group& g) {
   auto cls = [](const GtClassScore& c) {
     return nlohmann::json{{"predicted", c.predicted}, {"correct", c.correct},     {"precision", c.precision()},
@@ -138,7 +189,10 @@ nlohmann::json to_json(const Group& g) {
           {"field_boundary", {{"columns", g.features.boundary_columns}, {"within_4px", g.features.boundary_right},
                               {"share", g.features.boundary_share()}}},
           {"markings", {{"px", g.features.marking_px}, {"on_line_px", g.features.marking_on_line_px},
-                        {"share", g.features.marking_share()}}}};
+                        {"share", g.features.marking_share()}}},
+          {"hand_field_boundary", {{"columns", g.hand_boundary.errors_px.size()},
+                                   {"within_2pct_height", g.hand_boundary.within_share},
+                                   {"median_error_px", median(g.hand_boundary.errors_px)}}}};
 }
 
 }  // namespace
@@ -162,6 +216,7 @@ struct EvalImage {
   fs::path image, mask;  // mask: synthetic sets only
   synth::GroundTruth truth;
   std::string row, condition;
+  std::vector<float> boundary_rows;  // hand truth only: synth::field_boundary_rows
 };
 // Loaded when scored, so a bad truth file skips its image (exit 1) and the others go on.
 using EvalItem = std::function<EvalImage()>;
@@ -174,7 +229,7 @@ std::vector<EvalItem> synth_items(const std::vector<fs::path>& dirs) {
         synth::GroundTruth truth = synth::load_truth(file);
         std::string row(synth::to_string(truth.scene)), condition(synth::to_string(truth.condition));
         fs::path mask = file.parent_path() / truth.mask;
-        return EvalImage{image, std::move(mask), std::move(truth), std::move(row), std::move(condition)};
+        return EvalImage{image, std::move(mask), std::move(truth), std::move(row), std::move(condition), {}};
       });
   return items;
 }
@@ -187,7 +242,8 @@ std::vector<EvalItem> hand_items(const std::vector<fs::path>& dirs, const fs::pa
     for (const fs::path& file : synth::list_hand_truth(dir))
       items.push_back([file, data, row = normal.filename().string()] {
         synth::HandTruth hand = synth::load_hand_truth(file);
-        return EvalImage{data / hand.image, {}, std::move(hand.truth), row, "hand"};
+        std::vector<float> rows = synth::field_boundary_rows(hand);
+        return EvalImage{data / hand.image, {}, std::move(hand.truth), row, "hand", std::move(rows)};
       });
   }
   return items;
@@ -222,7 +278,7 @@ int cmd_eval_gt(const Args& args) {
 
   const std::vector<EvalItem> items = hand ? hand_items(dirs, *data) : synth_items(dirs);
   LineDetector detector(file.detector, file.thresholds);
-  detector.set_find_field_boundary(features);
+  detector.set_find_field_boundary(features || hand);
   std::map<std::pair<std::string, std::string>, Group> groups;
   Group total;
   int failed = 0;
@@ -241,9 +297,10 @@ int cmd_eval_gt(const Args& args) {
         const auto ft = synth::feature_truth(item.truth, mask, match.min_width_px);
         feature_score = synth::score_features(item.truth, ft, detector.features());
       }
+      const HandBoundary hand_boundary = score_hand_boundary(item.boundary_rows, detector.field_boundary(), img.rows);
       Group& g = groups[{item.row, item.condition}];
-      g.score += score, g.features += feature_score, g.detect_ms += ms;
-      total.score += score, total.features += feature_score, total.detect_ms += ms;
+      g.score += score, g.features += feature_score, g.hand_boundary += hand_boundary, g.detect_ms += ms;
+      total.score += score, total.features += feature_score, total.hand_boundary += hand_boundary, total.detect_ms += ms;
     } catch (const Error& e) {
       std::fprintf(stderr, "fieldlines eval: %s\n", e.what());
       ++failed;
@@ -278,6 +335,17 @@ int cmd_eval_gt(const Args& args) {
     }
     for (const auto& [key, g] : groups) print_feature_row(markdown, key.first, key.second, g);
     print_feature_row(markdown, "all", "all", total);
+  }
+  if (hand) {
+    std::printf("\n");
+    if (markdown)
+      std::printf("| folder | images | boundary columns | within 4 px | within 2 %% of height | median error px |\n"
+                  "|---|---|---|---|---|---|\n");
+    else
+      std::printf("%-12s %6s %8s %10s %10s %10s\n", "folder", "images", "columns", "within 4px", "within 2%",
+                  "median px");
+    for (const auto& [key, g] : groups) print_hand_boundary_row(markdown, key.first, g);
+    print_hand_boundary_row(markdown, "all", total);
   }
   out["total"] = to_json(total);
   if (json_path) write_file_atomically(*json_path, out.dump(2) + "\n");

@@ -1,6 +1,7 @@
 #include "fieldlines/synth/hand_truth.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -48,6 +49,22 @@ HandTruth hand_truth_from_json(const nlohmann::json& j, const std::string& ctx) 
     h.truth.features.push_back(std::move(f));
   }
   return h;
+}
+
+std::vector<float> field_boundary_rows(const HandTruth& hand) {
+  std::vector<float> rows(static_cast<std::size_t>(std::max(hand.width, 0)), -1.f);
+  for (const std::vector<TruthPoint>& line : hand.field_boundary)
+    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+      const TruthPoint& a = line[i];
+      const TruthPoint& b = line[i + 1];
+      if (!(b.x > a.x)) continue;  // a vertical step: its neighbours give the rows
+      // Clamped as floats: a point far off the frame must not overflow the int.
+      const int first = static_cast<int>(std::ceil(std::clamp(a.x, 0.f, float(hand.width))));
+      const int last = static_cast<int>(std::floor(std::clamp(b.x, -1.f, float(hand.width - 1))));
+      for (int x = first; x <= last; ++x)
+        rows[static_cast<std::size_t>(x)] = a.y + (b.y - a.y) * (static_cast<float>(x) - a.x) / (b.x - a.x);
+    }
+  return rows;
 }
 
 HandTruth load_hand_truth(const std::filesystem::path& path) {

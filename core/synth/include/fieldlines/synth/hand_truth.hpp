@@ -27,6 +27,10 @@ struct HandTruth {
   std::vector<std::vector<TruthPoint>> field_boundary;
 };
 
+// Per image column (`width` entries): the hand-drawn field boundary's row there, linear between
+// its points, or -1 where no polyline spans the column (an occluder reaching the frame's edge).
+std::vector<float> field_boundary_rows(const HandTruth& hand);
+
 // Throws fieldlines::Error naming `context` and the bad field.
 HandTruth hand_truth_from_json(const nlohmann::json& json, const std::string& context);
 HandTruth load_hand_truth(const std::filesystem::path& path);
