@@ -225,6 +225,34 @@ TEST(Stripes, AThinLineBlendedIntoPaleTurfIsAStripeOnlyWhenThinLinesAreAccepted)
   EXPECT_EQ(stripes(brighter_turf, ThinLines::Accepted), 0) << "brighter turf keeps the turf's colour";
 }
 
+// A far line in a wall's shade (the authors' SSL frames): its turf is darker than the frame's
+// field colour, and the line, thin and blurred, is not brighter than that colour. Its contrast is
+// against the turf beside it; the same paint on the sunlit turf is no brighter than the turf.
+TEST(Stripes, AFarLineOnShadedTurfIsMeasuredAgainstTheTurfBesideIt) {
+  const cv::Scalar sunlit(70, 170, 60), shaded(45, 110, 38), dull_paint(95, 105, 100);  // B, G, R
+  cv::Mat clean(480, 640, CV_8UC3, sunlit);
+  clean.rowRange(0, 120).setTo(shaded);
+  clean.rowRange(60, 63).setTo(dull_paint);
+  clean.rowRange(300, 303).setTo(dull_paint);
+  const cv::Mat frame = noisy(clean);
+  const std::optional<Rgb> field = estimate_field_colour(frame);
+  ASSERT_TRUE(field);
+  const double field_sum = (*field)[0] + (*field)[1] + (*field)[2];
+  ASSERT_LT(dull_paint[0] + dull_paint[1] + dull_paint[2], 1.1 * field_sum) << "no brighter than the field colour by a tenth";
+  // Each line's two edges, bright sides facing the paint.
+  const auto stripes_at = [&](float top, float bottom) {
+    std::vector<Segment> edges{
+        {.x0 = 60, .y0 = top, .x1 = 580, .y1 = top, .grad_y = {50, 50, 50}, .label = Label::Marking},
+        {.x0 = 60, .y0 = bottom, .x1 = 580, .y1 = bottom, .grad_y = {-50, -50, -50}, .label = Label::Marking}};
+    StripeWorkspace work;
+    std::vector<Marking> out;
+    find_stripes(frame, field, edges, stripes_on(), work, out);
+    return count(edges, Label::Marking);
+  };
+  EXPECT_EQ(stripes_at(59, 63), 2) << "the line on shaded turf";
+  EXPECT_EQ(stripes_at(299, 303), 0) << "the same paint on sunlit turf";
+}
+
 // The studio's one pass (run_with_thin_lines) flags what a run with thin lines refused and one
 // with them accepted flag, on every segment of synthetic frames of both scenes in every light
 // (the SSL field's far lines are thinner than a pixel).

@@ -17,6 +17,7 @@ constexpr int kOuterPx = 2;      // the profile starts this far outside the edge
 constexpr int kMaxBlurPx = 10;   // paint fades into turf over at most this many px (motion blur)...
 constexpr float kBlurShade = 0.85f;  // ...none darker than this share of the field colour
 constexpr float kMinWidthPx = 0.5f;
+constexpr float kShadedTurf = 0.8f;      // paint's contrast is against turf down to this share of the field colour
 constexpr float kTopWidthShare = 0.25f;  // the widest stripe on the top row, as a share of the bottom's
 constexpr float kTwinCos = 0.9962f;      // cos(5 degrees): twins are this parallel...
 constexpr float kTwinWidthShare = 0.35f; // ...their distance within this share of the width...
@@ -124,7 +125,12 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
     level = 0.5f * (b[peak] + 0.5f * (b[outside] + b[far_turf]));
     if (b[far_turf] < level) break;
   }
-  if (b[peak] < kPaintContrast * pixel.field_sum()) return {};
+  // Brighter than the turf beside it, or than the field colour where that is darker: turf in a
+  // wall's shade is darker than the frame's field colour, and a thin far line on it less bright
+  // than that (SSL: 4 of the 129 markings of the authors' 41 frames). Not below kShadedTurf of
+  // the field colour: dim frames' turf texture would pass (docs/detector.md).
+  const float turf_beside = std::clamp(0.5f * (b[outside] + b[far_turf]), kShadedTurf * pixel.field_sum(), pixel.field_sum());
+  if (b[peak] < kPaintContrast * turf_beside) return {};
   // Paint leaves the field colour; a line too thin to fill a pixel may not, and is taken only
   // when asked: its peak is turf with grey blended in, against the turf on both sides.
   if (turf[peak] && !(thin == ThinLines::Accepted && blended_paint(work.pixels[peak], work.pixels[outside]) &&

@@ -7,8 +7,9 @@
 // along its length, read in the 8-bit BGR frame from outside its edge into its bright side (the
 // side its colour gradient points to; the image decides when the gradients are zero):
 //  - turf in the frame's field colour (features/field_pixel.hpp) outside the edge;
-//  - paint: a peak brighter than the field colour by a tenth and out of the field colour (see
-//    ThinLines for paint too thin to leave it);
+//  - paint: a peak brighter by a tenth than the turf on both sides, or than the field colour
+//    where that is darker (turf in a wall's shade, down to 0.8 of the field colour), and out of
+//    the field colour (see ThinLines for paint too thin to leave it);
 //  - turf again past the paint, within the largest plausible width: in the field colour or in
 //    the colour of the turf outside (far turf in haze misses the frame's colour), and darker
 //    than half-way to the paint. The largest plausible width grows linearly towards the image
