@@ -21,6 +21,7 @@
 #include "fieldlines/synth/hand_truth.hpp"
 #include "fieldlines/data/image_io.hpp"
 #include "fieldlines/synth/synth.hpp"
+#include "fieldlines/train/percentile.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
 #include "app/cli/subcommand.hpp"
 #include "app/cli/synth_set.hpp"
@@ -78,9 +79,9 @@ examples:
 // error in px (the frame's height where the detector found no field), and how many are within
 // 2 % of the frame's height (a real frame's drawing is accurate to about 1.5 px).
 struct HandBoundary {
-  std::vector<float> errors_px;
+  std::vector<double> errors_px;
   long within_share = 0;
-  static constexpr float kShare = 0.02f;
+  static constexpr double kShare = 0.02;
   HandBoundary& operator+=(const HandBoundary& o) {
     errors_px.insert(errors_px.end(), o.errors_px.begin(), o.errors_px.end());
     within_share += o.within_share;
@@ -92,9 +93,9 @@ HandBoundary score_hand_boundary(const std::vector<float>& truth_rows, const Fie
   HandBoundary out;
   for (std::size_t x = 0; x < truth_rows.size(); ++x) {
     if (truth_rows[x] < 0) continue;
-    const float e = detected.empty() ? float(height) : std::abs(detected.y_at(float(x)) - truth_rows[x]);
+    const double e = detected.empty() ? height : std::abs(detected.y_at(float(x)) - truth_rows[x]);
     out.errors_px.push_back(e);
-    out.within_share += e <= HandBoundary::kShare * float(height);
+    out.within_share += e <= HandBoundary::kShare * height;
   }
   return out;
 }
@@ -148,19 +149,11 @@ void print_feature_row(bool markdown, const std::string& scene, const std::strin
   }
 }
 
-double median(std::vector<float> v) {
-  if (v.empty()) return 0;
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  if (v.size() % 2 == 1) return *mid;
-  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
-}
-
 void print_hand_boundary_row(bool markdown, const std::string& folder, const Group& g) {
   const HandBoundary& b = g.hand_boundary;
   const long n = static_cast<long>(b.errors_px.size());
   const float px = synth::FeatureScoreParams{}.max_boundary_px;
-  const long within_px = std::count_if(b.errors_px.begin(), b.errors_px.end(), [&](float e) { return e <= px; });
+  const long within_px = std::count_if(b.errors_px.begin(), b.errors_px.end(), [&](double e) { return e <= px; });
   const std::string w4 = fmt(n > 0 ? double(within_px) / n : 0, n > 0),
                     ws = fmt(n > 0 ? double(b.within_share) / n : 0, n > 0), med = fmt(median(b.errors_px), n > 0);
   if (markdown)
