@@ -2,6 +2,7 @@
 // in perspective (an ellipse drawn on turf, the halfway line through it) is one ellipse with its
 // centre and axes, also from pieces that lie apart; straight lines and corners are none; bad
 // input never crashes.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -175,6 +176,31 @@ TEST(CentreCircle, TheFitIsRefinedOnThePaint) {
   EXPECT_LE(std::abs(short_axis(on_paint[0]) - 2 * b), 1.f) << short_axis(on_paint[0]);
   EXPECT_LE(std::hypot(on_paint[0].cx - centre.x, on_paint[0].cy - centre.y), 1.f);
   EXPECT_EQ(on_paint[0].confidence, from_pieces[0].confidence) << "the turn covered is the pieces'";
+}
+
+// An ellipse the pieces make must lie on paint wherever the frame shows it: the same pieces over
+// a frame with only the lower half of their ellipse painted (the upper half bare turf) give
+// none; with all of it painted, the ellipse.
+TEST(CentreCircle, AnEllipseOverBareTurfIsRefused) {
+  const cv::Point2f centre(320, 220);
+  const float a = 190, b = 40;
+  const std::vector<Marking> pieces = flat_circle_pieces(centre, a, b, 0, 5);
+  const cv::Size2f axes(2 * a, 2 * b);
+  cv::Mat half_painted(480, 640, CV_8UC3, kTurf), painted(480, 640, CV_8UC3, kTurf);
+  cv::ellipse(half_painted, cv::Point(320, 220), cv::Size(190, 40), 0, 0, 180, kPaint, 4, cv::LINE_AA);  // y down: the lower half
+  cv::ellipse(painted, cv::RotatedRect(centre, axes, 0), kPaint, 4, cv::LINE_AA);
+  const Rgb field{static_cast<float>(kTurf[2]), static_cast<float>(kTurf[1]), static_cast<float>(kTurf[0])};
+  CircleWorkspace work;
+  std::vector<MarkingEllipse> out;
+  find_centre_circle(pieces, work, out, noisy(half_painted), field);
+  EXPECT_TRUE(out.empty()) << "half of it over bare turf";
+  EXPECT_EQ(std::count(work.on_ellipse.begin(), work.on_ellipse.end(), 1), 0);
+  find_centre_circle(pieces, work, out, noisy(painted), field);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_LE(std::hypot(out[0].cx - centre.x, out[0].cy - centre.y), 0.1f * std::sqrt(a * b));
+  // Without the field colour there is no turf to tell: the pieces' ellipse stands.
+  find_centre_circle(pieces, work, out, noisy(half_painted));
+  EXPECT_EQ(out.size(), 1u);
 }
 
 TEST(CentreCircle, BadInputGivesNoneAndNeverCrashes) {

@@ -195,7 +195,7 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
   label(pieces, gain, short_pieces, f.field_boundary);
   find_stripes(bgr, impl_->field, pieces, params_, impl_->piece_stripes, impl_->arcs);
   std::vector<std::uint8_t>& on_ellipse = impl_->circle.on_ellipse;
-  if (params_.centre_circle) find_centre_circle(impl_->arcs, impl_->circle, f.ellipses, bgr);
+  if (params_.centre_circle) find_centre_circle(impl_->arcs, impl_->circle, f.ellipses, bgr, impl_->field);
   else on_ellipse.assign(impl_->arcs.size(), 0);
   if (params_.intersections) {
     // The circle's chords bend into each other and cross the halfway line: no junctions.

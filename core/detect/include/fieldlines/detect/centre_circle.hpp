@@ -38,10 +38,16 @@
 // px) along its normal. A piece is a straight fit to a curved run of pixels, a tangent whose
 // ends stand off the paint near a flat ellipse's sharp ends, so the pieces' fit comes out too
 // long; the paint's is not. Kept when at least 12 points are read and most lie on the refit.
+// Given the field colour too, an ellipse is refused when more than 5 % of its points in the frame
+// show bare turf across it (every pixel within the same reach in the field colour, none
+// brighter): a circle's image lies on paint wherever the frame shows it, save behind a robot (no
+// field colour there), while an ellipse fitted to one arc and a stray piece runs over turf. The
+// chains' ellipse and the pairs' are tried in turn, the one covering more of the turn first.
 //
 // The fit is written out (a 5x5 solve on the stack) rather than cv::fitEllipse, which allocates
 // per call: warm detect allocates nothing with this stage on.
 #include <cstdint>
+#include <optional>
 #include <opencv2/core/mat.hpp>
 #include <span>
 #include <vector>
@@ -60,6 +66,7 @@ struct CircleWorkspace {
   std::vector<int> chain_size;     // pieces per chain root
   std::vector<Point> points;       // samples of the chain being fitted
   std::vector<std::uint8_t> on_ellipse;  // per piece: part of the ellipse found
+  std::vector<std::uint8_t> chained;     // per piece: part of the chains' ellipse
   std::vector<int> order;                // pieces by length
   std::vector<std::uint8_t> support;     // per piece: along the ellipse being tried
   std::vector<Point> refined;            // the paint's centre read round the ellipse
@@ -68,7 +75,8 @@ struct CircleWorkspace {
 // Fits the centre circle to `pieces` (stripe centre lines of short segments) into `out`
 // (cleared first: empty or one ellipse); `work.on_ellipse[i]` tells whether piece i is on it.
 // `bgr`: the 8-bit BGR frame they were found in, for the refit on the paint; empty: none.
+// `field`: the frame's field colour, for the bare-turf check; none: no check.
 void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, std::vector<MarkingEllipse>& out,
-                        const cv::Mat& bgr = {});
+                        const cv::Mat& bgr = {}, const std::optional<Rgb>& field = std::nullopt);
 
 }  // namespace fieldlines
