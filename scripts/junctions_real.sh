@@ -24,11 +24,7 @@ junctions_on() {
 }
 echo "| venue | thresholds | circle | true junctions | detected | matched | type correct | false | precision | recall | within 12 px: P / R / type |"
 echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|"
-for v in "${venues[@]}"; do
-  IFS='|' read -r id pattern title <<<"$v"
-  [[ -d "tests/data/hand_truth/$id" ]] || continue
-  if ! compgen -G "$data/$pattern" >/dev/null; then echo "| $title | not measured: no $data | | | | | | | | | |"; continue; fi
-  fitting_frames "$id" "$pattern"
+venue_rows() {
   scored_paths=(); for image in $scored; do scored_paths+=("$data/$image"); done
   "$bin" calibrate "$out/$id" -o "$out/$id-cal.json" --quiet 2>"$out/$id-cal.err" || true
   for which in built-in calibrated; do
@@ -67,4 +63,5 @@ print(f"| {sys.argv[2]} | {sys.argv[3]} | {sys.argv[4]} | {n_true} | {detected} 
 PY
     done
   done
-done
+}
+each_venue venue_rows 11

@@ -30,11 +30,7 @@ stripes() {  # THRESHOLDS -> the same file with the stripes stage on, beside it
 }
 echo "| venue | frames fitted / scored | thresholds | marking P | marking R | calibration says |"
 echo "|---|---|---|---:|---:|---|"
-for v in "${venues[@]}"; do
-  IFS='|' read -r id pattern title <<<"$v"
-  [[ -d "tests/data/hand_truth/$id" ]] || continue
-  if ! compgen -G "$data/$pattern" >/dev/null; then echo "| $title | not measured: no $data | | | | |"; continue; fi
-  fitting_frames "$id" "$pattern"
+venue_rows() {
   fitted=$(ls "$out/$id" | wc -l)
   n_scored=$(wc -w <<<"$scored")
   echo "| $title | $fitted / $n_scored | built-in | $(score "$id" assets/default_thresholds.json) | |"
@@ -69,7 +65,8 @@ print('; '.join(parts))")
     everything "$out/$id-detector.json" "$out/$id-everything.json"
     echo "| | | (recall ceiling of the calibrated detector) | | $(score "$id" "$out/$id-everything.json" | cut -d'|' -f2 | tr -d ' ') | |"
   fi
-done
+}
+each_venue venue_rows 6
 
 echo
 echo "Synthetic Kid field, one light at a time: calibrated on 20 frames of one light (seed 1), scored"

@@ -38,3 +38,20 @@ fitting_frames() {
     [[ " $scored " == *" ${image#$data/} "* ]] || ln -s "$(realpath "$image")" "$out/$1/"
   done
 }
+
+# CALLBACK CELLS: for each venue with hand-drawn truth, sets $id, $title and (fitting_frames) the
+# fitted frames and $scored, then runs CALLBACK; a venue whose frames are not in $data gets a
+# "not measured" row of CELLS cells instead.
+each_venue() {
+  local callback=$1 cells=$2 v pattern
+  for v in "${venues[@]}"; do
+    IFS='|' read -r id pattern title <<<"$v"
+    [[ -d "tests/data/hand_truth/$id" ]] || continue
+    if ! compgen -G "$data/$pattern" >/dev/null; then
+      echo "| $title | not measured: no $data |$(printf ' |%.0s' $(seq 3 "$cells"))"
+      continue
+    fi
+    fitting_frames "$id" "$pattern"
+    "$callback"
+  done
+}
