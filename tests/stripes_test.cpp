@@ -153,6 +153,30 @@ TEST(Stripes, ALineWithOneEdgeDetectedIsStillMeasured) {
   EXPECT_EQ(one[0].label, Label::None);
 }
 
+// A straight line with another line's paint beside its middle (a T's arm, a goal area's short
+// side line between two others): the profile there crosses both paints and measures a centre
+// far off the line's, which is no bow. Shape::Straight keeps the line; a chord of a curve it
+// still refuses (TheCentreCirclesChordsAreNoStraightStripes).
+TEST(Stripes, PaintBesideAStraightLineIsNoBow) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  cv::rectangle(clean, cv::Point(200, 230), cv::Point(599, 239), kPaint, cv::FILLED);  // 10 px, rows 230-239
+  cv::rectangle(clean, cv::Point(300, 240), cv::Point(309, 259), kPaint, cv::FILLED);  // an arm below, 20 px
+  const cv::Mat frame = noisy(clean);
+  const std::optional<Rgb> field = estimate_field_colour(frame);
+  ASSERT_TRUE(field);
+  StripeWorkspace work;
+  std::vector<Marking> out;
+  // The line's upper edge, from x 205 to 405: its profiles at a tenth, three tenths, ..., of its
+  // length; the middle one (x 305) runs down through the line and the arm.
+  std::vector<Segment> edge{{.x0 = 205, .y0 = 229.5f, .x1 = 405, .y1 = 229.5f, .label = Label::Marking}};
+  find_stripes(frame, field, edge, stripes_on(), work, out, ThinLines::Refused, Shape::Straight);
+  ASSERT_EQ(out.size(), 1u) << "a straight line";
+  EXPECT_EQ(edge[0].label, Label::Marking);
+  EXPECT_NEAR(out[0].y0, 234.5f, 1);
+  EXPECT_NEAR(out[0].y1, 234.5f, 1);
+  EXPECT_NEAR(out[0].width, 10, 1.5);
+}
+
 // A line seen in perspective widens towards the camera, so its centre drifts away from either
 // edge: the centre line follows the paint at both ends, from one edge or from both. (A constant
 // offset from the edge, its median, misses the far end by about a quarter of the near width.)

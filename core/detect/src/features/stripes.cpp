@@ -23,6 +23,10 @@ constexpr float kTwinCos = 0.9962f;      // cos(5 degrees): twins are this paral
 constexpr float kTwinWidthShare = 0.35f; // ...their distance within this share of the width...
 constexpr float kTwinMinSlackPx = 2;     // ...or this many pixels, whichever is more
 
+// How far a width may stray from a stripe's `width` and still be its own: twins' distance, a
+// profile's width for the bow.
+float width_slack(float width) { return std::max(kTwinMinSlackPx, kTwinWidthShare * width); }
+
 // A profile that leaves the image through its bottom or sides while still in paint is cut: it
 // says nothing either way (a line near the camera, running out of the frame). One leaving
 // through the top says no: above the field are walls, not paint.
@@ -188,10 +192,15 @@ std::pair<float, float> offset_line(const std::array<float, 32>& f, const std::a
 // How far the centres of the profiles a quarter to three quarters along (at f) lie off the line
 // from offset0 to offset1, less how far the outer ones do, on average: a chord of a curve bows
 // (its middle on one side of the paint's centre, its ends on the other); 0 without both kinds.
-float bow(const std::array<float, 32>& f, const std::array<float, 32>& offset, int n, float offset0, float offset1) {
+// A profile whose width is off the median by more than a twin's slack crossed other paint (a
+// short line between two others, near a corner) and is left out: its centre is no centre.
+float bow(const std::array<float, 32>& f, const std::array<float, 32>& offset, const std::array<float, 32>& width, int n,
+          float offset0, float offset1, float median_width) {
   float middle = 0, outer = 0;
   int n_middle = 0, n_outer = 0;
+  const float slack = width_slack(median_width);
   for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
+    if (std::abs(width[i] - median_width) > slack) continue;  // it crossed other paint: no say
     const float off = offset[i] - (offset0 + f[i] * (offset1 - offset0));
     const bool in_middle = f[i] > 0.25f && f[i] < 0.75f;
     (in_middle ? middle : outer) += off;
@@ -256,9 +265,10 @@ bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segmen
   const auto finish = [&](std::size_t m, Candidate& out) {
     const int n = stripes[m];
     if (2 * n < decided || n == 0) return false;
-    out.width = median(widths[m], n);
-    std::tie(out.offset0, out.offset1) = offset_line(at[m], offsets[m], n, widths[m]);  // widths: scratch now
-    out.bow = bow(at[m], offsets[m], n, out.offset0, out.offset1);
+    std::array<float, 32> sorted = widths[m];
+    out.width = median(sorted, n);
+    std::tie(out.offset0, out.offset1) = offset_line(at[m], offsets[m], n, sorted);  // sorted: scratch now
+    out.bow = bow(at[m], offsets[m], widths[m], n, out.offset0, out.offset1, out.width);
     return true;
   };
   if (refused) {
@@ -327,7 +337,7 @@ void pair_stripes(std::span<Segment> segments, std::vector<Candidate>& cs, const
       if (d < 0) continue;
       const float width = 0.5f * (cs[i].width + cs[j].width);
       const float error = std::abs(d - width);
-      if (error > std::max(kTwinMinSlackPx, kTwinWidthShare * width)) continue;
+      if (error > width_slack(width)) continue;
       if (best == cs.size() || error < best_error) best = j, best_error = error;
     }
     if (best < cs.size()) {

@@ -39,8 +39,9 @@
 // A caller that wants straight lines only (the junctions: Shape::Straight) gets no candidate
 // whose paint bows from its edge's line by more than 1 px or a fifth of its width, whichever is
 // more (the mean offset of its middle profiles, a quarter to three quarters along, from the
-// robust line through all, less that of the outer ones): a chord of a curve, such as the centre
-// circle's, bows by 1.3 to 4.5 px; a straight line a few px wide by under 0.9.
+// robust line through all, less that of the outer ones; a profile whose width strays from the
+// median as a twin's distance may not crossed other paint and has no say): a chord of a curve,
+// such as the centre circle's, bows by 1.3 to 4.5 px; a straight line a few px wide by under 0.9.
 #include <cstdint>
 #include <optional>
 #include <span>
