@@ -37,11 +37,11 @@ constexpr int kMinSupport = 4;              // pieces along a pair's ellipse
 // small, but a circle seen off the optical axis is an ellipse turned by several degrees, and an
 // axis off by a few degrees misses a flat ellipse's ends.
 constexpr int kRollSteps = 3;
+constexpr float kRollStepDeg = 3;
 // An ellipse over bare turf on more than this share of its points in the frame is refused. On
 // the tuning seeds (Kid 1, 2, 3, 5) every circle found showed none; the wrong ellipses 0.09 to
 // 0.46, and some none.
 constexpr float kMaxBareTurf = 0.05f;
-constexpr float kRollStepDeg = 3;
 
 // A conic A u^2 + B uv + C v^2 + D u + E v + F = 0 in coordinates centred on (mx, my) and scaled
 // by s (u = (x - mx) / s), and the ellipse it is.
@@ -530,27 +530,27 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
   // refused where it runs over bare turf.
   Fit paired;
   const float paired_share = fit_from_pairs(pieces, work, paired, frame);
-  work.chained = work.on_ellipse;
+  // The chains' pieces stay in work.on_ellipse, the pairs' in work.support, until one is kept.
   const bool pairs_first = paired_share > share;
   const bool read_frame = !bgr.empty() && bgr.type() == CV_8UC3;
   for (const bool pairs : {pairs_first, !pairs_first}) {
     Fit candidate = pairs ? paired : fit;
     const float candidate_share = pairs ? paired_share : share;
     if (candidate_share <= 0) continue;
-    work.on_ellipse = pairs ? work.support : work.chained;
+    const std::vector<std::uint8_t>& on = pairs ? work.support : work.on_ellipse;
     if (read_frame) {
       // The turn the ellipse's pieces cover, and their tolerance (half their mean width).
       work.points.clear();
       float width = 0;
       int count = 0;
       for (std::size_t i = 0; i < n; ++i)
-        if (work.on_ellipse[i]) add_samples(pieces[i], work.points), width += pieces[i].width, ++count;
+        if (on[i]) add_samples(pieces[i], work.points), width += pieces[i].width, ++count;
       const float tolerance = std::max(2.5f, width / static_cast<float>(std::max(count, 1)) / 2);
       if (count > 0) refine_on_paint(bgr, tolerance, work, candidate);
-      if (field) {
-        if (bare_turf_share(bgr, FieldPixel(*field, FieldBoundaryParams{}), tolerance, candidate) > kMaxBareTurf) continue;
-      }
+      if (field && bare_turf_share(bgr, FieldPixel(*field, FieldBoundaryParams{}), tolerance, candidate) > kMaxBareTurf)
+        continue;
     }
+    if (pairs) work.on_ellipse = work.support;
     out.push_back(candidate.ellipse);
     out.back().confidence = candidate_share;
     return;

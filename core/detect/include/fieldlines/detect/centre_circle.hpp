@@ -66,7 +66,6 @@ struct CircleWorkspace {
   std::vector<int> chain_size;     // pieces per chain root
   std::vector<Point> points;       // samples of the chain being fitted
   std::vector<std::uint8_t> on_ellipse;  // per piece: part of the ellipse found
-  std::vector<std::uint8_t> chained;     // per piece: part of the chains' ellipse
   std::vector<int> order;                // pieces by length
   std::vector<std::uint8_t> support;     // per piece: along the ellipse being tried
   std::vector<Point> refined;            // the paint's centre read round the ellipse
