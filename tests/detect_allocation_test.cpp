@@ -17,6 +17,7 @@
 
 #include "cli_test_support.hpp"
 #include "fieldlines/detect/detector.hpp"
+#include "fieldlines/synth/synth.hpp"
 #include "shared_data.hpp"
 
 namespace {
@@ -264,6 +265,34 @@ TEST(DetectAllocations, NoneWithStripes) {
   t.field_boundary_gate = true;
   expect_warm_detect_allocates_nothing(frames, names, stripes, t);
   expect_warm_detect_allocates_nothing(frames, names, all_features(), t);
+}
+
+// With the camera known the centre circle is also fitted on the turf (ground_circle.hpp); the
+// camera is set per frame, as a walking robot's pose changes: still nothing.
+TEST(DetectAllocations, NoneWithTheCameraSetPerFrame) {
+  synth::SynthParams params;
+  params.field.scene = synth::Scene::Kid;
+  std::vector<synth::SynthSample> samples;
+  for (const int index : {1, 5, 15, 22}) samples.push_back(synth::generate(params, 4242, index));
+  LineDetector detector(all_features());
+  std::vector<Segment> out;
+  std::size_t ellipses = 0;
+  for (int pass = 0; pass < 2; ++pass)
+    for (const synth::SynthSample& s : samples) {
+      detector.set_camera(synth::to_ground_camera(s.truth.intrinsics, s.truth.pose));
+      detector.detect(s.bgr, out);
+      ellipses += detector.features().ellipses.size();
+    }
+  EXPECT_GT(ellipses, 0u) << "the frames must exercise the fit on the turf";
+  for (const synth::SynthSample& s : samples) {
+    const GroundCamera camera = synth::to_ground_camera(s.truth.intrinsics, s.truth.pose);
+    EXPECT_EQ(allocations_in([&] {
+                detector.set_camera(camera);
+                detector.detect(s.bgr, out);
+              }),
+              0)
+        << "kid 4242 frame " << s.truth.index;
+  }
 }
 
 // With threads > 1 the workers start on the first detect and are woken per frame without a heap

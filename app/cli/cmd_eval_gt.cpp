@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <numbers>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,7 +18,9 @@
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/synth/camera.hpp"
 #include "fieldlines/synth/feature_truth.hpp"
+#include "fieldlines/synth/field.hpp"
 #include "fieldlines/synth/gt_eval.hpp"
 #include "fieldlines/synth/hand_truth.hpp"
 #include "fieldlines/data/image_io.hpp"
@@ -61,6 +65,13 @@ options:
                      the field boundary (share of the columns showing carpet where it is within
                      4 px of the carpet's top) and the markings (share of the pixels along the
                      stripes' centre lines within half the line's width + 1 px of a line's centre)
+  --truth-camera     give the detector each frame's camera from its truth (intrinsics, pitch,
+                     roll, height: what a robot's kinematics know) and its field's centre circle
+                     radius, so the circle is also fitted on the turf (--gt only)
+  --camera-error DEG,FRAC
+                     with --truth-camera: the camera given is off, its pitch and roll each by up
+                     to DEG degrees and its height by up to FRAC of it (uniform, drawn per frame
+                     from its seed and index: the same every run), as a robot's pose estimate is
   --max-distance PX  edge match distance (default 2.5)
   --min-width PX     painted parts narrower than this are not visible: they do not count in
                      recall, nor in the truth of junctions, their arms and the circle (default 1)
@@ -242,12 +253,45 @@ std::vector<EvalItem> hand_items(const std::vector<fs::path>& dirs, const fs::pa
   return items;
 }
 
+// How far the camera given to the detector is off (--camera-error): at most this many degrees of
+// pitch and of roll, this share of its height.
+struct CameraError {
+  double degrees = 0, height_share = 0;
+};
+CameraError parse_camera_error(const std::optional<std::string>& text) {
+  if (!text) return {};
+  CameraError e;
+  char comma = 0;
+  int used = 0;
+  if (std::sscanf(text->c_str(), "%lf%c%lf%n", &e.degrees, &comma, &e.height_share, &used) != 3 || comma != ',' ||
+      used != static_cast<int>(text->size()) || !(e.degrees >= 0 && e.degrees <= 30) ||
+      !(e.height_share >= 0 && e.height_share < 1))
+    throw Error("--camera-error: expected DEG,FRAC with DEG in [0, 30] and FRAC in [0, 1), got '" + *text + "'");
+  return e;
+}
+
+// The frame's camera from its truth, off by up to `error` (drawn from the frame's seed and index),
+// and its field's centre circle radius.
+void give_truth_camera(const synth::GroundTruth& truth, const CameraError& error, LineDetector& detector) {
+  GroundCamera camera = synth::to_ground_camera(truth.intrinsics, truth.pose);
+  std::mt19937_64 random(truth.seed * 1000003 + static_cast<std::uint64_t>(truth.index));
+  std::uniform_real_distribution<double> unit(-1, 1);
+  const double radians = error.degrees * std::numbers::pi / 180;
+  camera.pitch_rad += radians * unit(random);
+  camera.roll_rad += radians * unit(random);
+  camera.height_m *= 1 + error.height_share * unit(random);
+  detector.set_camera(camera);
+  DetectorParams params = detector.params();
+  params.centre_circle_radius = synth::centre_circle_radius(synth::make_field({.scene = truth.scene}));
+  if (params.centre_circle_radius > 0) detector.set_params(params);
+}
+
 }  // namespace
 
 int cmd_eval_gt(const Args& args) {
   const auto parsed = parse_or_print_help(
-      args, {"--gt", "--hand", "--data", "--thresholds", "--max-distance", "--min-width", "--json"},
-      {"--markdown", "--features"},
+      args, {"--gt", "--hand", "--data", "--thresholds", "--max-distance", "--min-width", "--json", "--camera-error"},
+      {"--markdown", "--features", "--truth-camera"},
       kHelp);
   if (!parsed) return 0;
   const ParsedArgs& a = *parsed;
@@ -268,6 +312,10 @@ int cmd_eval_gt(const Args& args) {
   match.max_distance_px = static_cast<float>(a.double_or("--max-distance", match.max_distance_px, 0.1, 50));
   match.min_width_px = static_cast<float>(a.double_or("--min-width", match.min_width_px, 0, 100));
   const bool markdown = a.flag("--markdown");
+  const bool truth_camera = a.flag("--truth-camera");
+  if (truth_camera && hand) throw Error("--truth-camera needs synthetic sets (--gt): hand-drawn truth has no camera");
+  const CameraError camera_error = parse_camera_error(a.value("--camera-error"));
+  if (a.value("--camera-error") && !truth_camera) throw Error("--camera-error needs --truth-camera");
 
   const std::vector<EvalItem> items = hand ? hand_items(dirs, *data) : synth_items(dirs);
   LineDetector detector(file.detector, file.thresholds);
@@ -279,6 +327,7 @@ int cmd_eval_gt(const Args& args) {
     try {
       const EvalImage item = load();
       const cv::Mat img = load_image(item.image);
+      if (truth_camera) give_truth_camera(item.truth, camera_error, detector);
       const auto start = std::chrono::steady_clock::now();
       const std::vector<Segment> segments = detector.detect(img);
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

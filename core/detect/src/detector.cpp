@@ -195,7 +195,8 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
   label(pieces, gain, short_pieces, f.field_boundary);
   find_stripes(bgr, impl_->field, pieces, params_, impl_->piece_stripes, impl_->arcs);
   std::vector<std::uint8_t>& on_ellipse = impl_->circle.on_ellipse;
-  if (params_.centre_circle) find_centre_circle(impl_->arcs, impl_->circle, f.ellipses, bgr, impl_->field);
+  if (params_.centre_circle)
+    find_centre_circle(impl_->arcs, impl_->circle, f.ellipses, bgr, impl_->field, camera_, params_.centre_circle_radius);
   else on_ellipse.assign(impl_->arcs.size(), 0);
   if (params_.intersections) {
     // The circle's chords bend into each other and cross the halfway line: no junctions.
@@ -218,6 +219,16 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
   // The circle's pieces are markings too (arcs).
   for (std::size_t i = 0; i < impl_->arcs.size(); ++i)
     if (on_ellipse[i]) f.markings.push_back(impl_->arcs[i]);
+}
+
+void LineDetector::set_params(const DetectorParams& params) {
+  validate(params);
+  params_ = params;
+}
+
+void LineDetector::set_camera(const std::optional<GroundCamera>& camera) {
+  if (camera) validate(*camera);
+  camera_ = camera;
 }
 
 const FieldBoundary& LineDetector::field_boundary() const { return impl_->features.field_boundary; }

@@ -12,6 +12,11 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 }
 
+GroundCamera to_ground_camera(const Intrinsics& k, const Pose& pose) {
+  return {.fx = k.fx, .fy = k.fy, .cx = k.cx, .cy = k.cy, .pitch_rad = pose.pitch, .roll_rad = pose.roll,
+          .height_m = pose.position.z()};
+}
+
 Camera::Camera(const Intrinsics& k, const Pose& pose) : k_(k), pose_(pose) {
   const double cy = std::cos(pose.yaw), sy = std::sin(pose.yaw);
   const double cp = std::cos(pose.pitch), sp = std::sin(pose.pitch);

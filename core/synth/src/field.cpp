@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "fieldlines/detect/error.hpp"
 
@@ -133,6 +134,12 @@ FieldModel make_field(const FieldParams& params) {
     add_segment(f, "centre mark", {-0.05, 0}, {0.05, 0});
   }
   return f;
+}
+
+double centre_circle_radius(const FieldModel& field) {
+  for (const PaintedLine& line : field.lines)
+    if (line.arc && line.sweep >= 2 * std::numbers::pi - 1e-6) return line.radius;
+  return 0;
 }
 
 }  // namespace fieldlines::synth

@@ -7,6 +7,7 @@
 
 #include "conic_fit.hpp"
 #include "field_pixel.hpp"
+#include "ground_circle.hpp"
 
 #include <opencv2/core.hpp>  // Matx::solve is defined in operations.hpp
 
@@ -27,6 +28,10 @@ constexpr float kMinCoverage = 150.f / 360;  // less was a corner and a stray pi
 // degrees of its turn).
 constexpr float kFrameCoverShare = 0.8f;
 constexpr float kMinCutCoverage = 120.f / 360;
+// On the turf a circle of known radius needs less: pieces agreeing on its centre over 90 degrees
+// of its turn (on the tuning seeds 120 degrees found 41 circles of 53, 90 degrees 43, 72 degrees
+// no more).
+constexpr float kMinGroundCoverage = 90.f / 360;
 constexpr float kMaxTangentSin = 0.342f;  // sin(20 degrees)
 // The longest pieces: pair hypotheses and their support. 16, from 24: the same held-out figures,
 // one wrong ellipse fewer on the tuning seeds, one more Kid circle calibrated, the stage half as dear.
@@ -101,9 +106,10 @@ float in_frame_share(const Fit& fit, cv::Size frame) {
   return static_cast<float>(inside) / kCoverageBins;
 }
 
-// The turn an ellipse's points must cover: kMinCoverage, less when the frame cuts the ellipse.
-float required_coverage(const Fit& fit, cv::Size frame) {
-  return std::max(kMinCutCoverage, std::min(kMinCoverage, kFrameCoverShare * in_frame_share(fit, frame)));
+// The turn an ellipse's points must cover: kMinCoverage, less when the frame cuts the ellipse,
+// down to `least`.
+float required_coverage(const Fit& fit, cv::Size frame, float least = kMinCutCoverage) {
+  return std::max(least, std::min(kMinCoverage, kFrameCoverShare * in_frame_share(fit, frame)));
 }
 
 int root(std::vector<int>& parent, int i) {
@@ -273,13 +279,11 @@ bool read_across(const cv::Mat& bgr, const Fit& fit, float co, float si, int k, 
 }
 constexpr int kPaintStep = 30;  // R + G + B: less between the darkest and the brightest is no paint to see
 
-// The paint's centre across the fitted ellipse, read in the frame: at 72 points round it, on
-// the part of the turn its pieces cover, the middle of the pixels brighter than half-way from
-// the darkest to the brightest within a few px along the normal; the conic refitted to them. A
-// piece is a chord or a tangent of the curve, so the first fit lies off the paint near a flat
-// ellipse's sharp ends; the paint does not. Keeps `fit` unless the refit is an ellipse, covers
-// as much of the turn, and most of its points lie on it.
-void refine_on_paint(const cv::Mat& bgr, float tolerance, CircleWorkspace& work, Fit& fit) {
+// The paint's centre across the fitted ellipse, read in the frame, into work.refined: at 72
+// points round it, on the part of the turn its pieces cover (work.points), the middle of the
+// pixels brighter than half-way from the darkest to the brightest within a few px along the
+// normal.
+void read_paint(const cv::Mat& bgr, float tolerance, CircleWorkspace& work, const Fit& fit) {
   const int half = read_half(tolerance);
   // The bins of the turn the pieces cover (coverage()'s), so no point is read where the circle
   // is out of the frame or behind a robot.
@@ -304,8 +308,17 @@ void refine_on_paint(const cv::Mat& bgr, float tolerance, CircleWorkspace& work,
     const float offset = sum / weight;
     refined.push_back({a.x + offset * a.nx, a.y + offset * a.ny, 1});
   }
+}
+constexpr std::size_t kMinPaintPoints = 12;
+
+// The ellipse refitted to the paint read across it (read_paint()). A piece is a chord or a
+// tangent of the curve, so the first fit lies off the paint near a flat ellipse's sharp ends;
+// the paint does not. Keeps `fit` unless the refit is an ellipse and most of its points lie on it.
+void refine_on_paint(const cv::Mat& bgr, float tolerance, CircleWorkspace& work, Fit& fit) {
+  read_paint(bgr, tolerance, work, fit);
+  const std::vector<Point>& refined = work.refined;
   Fit candidate;
-  if (refined.size() < 12 || !fit_conic(refined, candidate)) return;
+  if (refined.size() < kMinPaintPoints || !fit_conic(refined, candidate)) return;
   int close = 0;
   for (const Point& p : refined) close += distance(candidate, p.x, p.y) <= tolerance;
   if (2 * close < static_cast<int>(refined.size())) return;
@@ -334,7 +347,8 @@ float bare_turf_share(const cv::Mat& bgr, const FieldPixel& pixel, float toleran
 }  // namespace
 
 void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, std::vector<MarkingEllipse>& out,
-                        const cv::Mat& bgr, const std::optional<Rgb>& field) {
+                        const cv::Mat& bgr, const std::optional<Rgb>& field, const std::optional<GroundCamera>& camera,
+                        double radius_m) {
   out.clear();
   const std::size_t n = pieces.size();
   const cv::Size frame = bgr.empty() ? cv::Size() : bgr.size();
@@ -422,34 +436,54 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
       }
     }
   }
-  // The chains' ellipse and the pairs', the one covering more of the turn first: the first the
-  // frame confirms is the circle. Given the frame, the ellipse is refitted to the paint and
-  // refused where it runs over bare turf.
+  // The chains' ellipse and the pairs', the one covering more of the turn first, after the one
+  // on the turf when the camera is known: the first the frame confirms is the circle. Given the
+  // frame, the image fits are refitted to the paint (the turf's is exact from the pose), and an
+  // ellipse is refused where it runs over bare turf.
   Fit paired;
   const float paired_share = fit_from_pairs(pieces, work, paired, frame);
-  // The chains' pieces stay in work.on_ellipse, the pairs' in work.support, until one is kept.
+  Fit grounded;
+  float ground_share = 0;
+  if (camera) {
+    ground_share = fit_on_ground(pieces, *camera, radius_m, work, grounded);
+    if (ground_share < required_coverage(grounded, frame, kMinGroundCoverage)) ground_share = 0;
+  }
+  // The chains' pieces stay in work.on_ellipse, the pairs' in work.support, the turf's in
+  // work.ground_support, until one is kept.
+  struct Candidate {
+    const Fit& fit;
+    float share;
+    const std::vector<std::uint8_t>& on;
+  };
+  const Candidate chained{fit, share, work.on_ellipse}, pairs{paired, paired_share, work.support},
+      turf{grounded, ground_share, work.ground_support};
   const bool pairs_first = paired_share > share;
+  const std::array<const Candidate*, 3> order{&turf, pairs_first ? &pairs : &chained, pairs_first ? &chained : &pairs};
   const bool read_frame = !bgr.empty() && bgr.type() == CV_8UC3;
-  for (const bool pairs : {pairs_first, !pairs_first}) {
-    Fit candidate = pairs ? paired : fit;
-    const float candidate_share = pairs ? paired_share : share;
-    if (candidate_share <= 0) continue;
-    const std::vector<std::uint8_t>& on = pairs ? work.support : work.on_ellipse;
+  for (const Candidate* c : order) {
+    if (c->share <= 0) continue;
+    Fit candidate = c->fit;
     if (read_frame) {
       // The turn the ellipse's pieces cover, and their tolerance (half their mean width).
       work.points.clear();
       float width = 0;
       int count = 0;
       for (std::size_t i = 0; i < n; ++i)
-        if (on[i]) add_samples(pieces[i], work.points), width += pieces[i].width, ++count;
+        if (c->on[i]) add_samples(pieces[i], work.points), width += pieces[i].width, ++count;
       const float tolerance = std::max(2.5f, width / static_cast<float>(std::max(count, 1)) / 2);
-      if (count > 0) refine_on_paint(bgr, tolerance, work, candidate);
+      if (count > 0 && c == &turf) {
+        // The paint's points refine the circle and the pose on the turf.
+        read_paint(bgr, tolerance, work, candidate);
+        if (work.refined.size() >= kMinPaintPoints) refit_on_ground(work.refined, *camera, radius_m, tolerance, work, candidate);
+      } else if (count > 0) {
+        refine_on_paint(bgr, tolerance, work, candidate);
+      }
       if (field && bare_turf_share(bgr, FieldPixel(*field, FieldBoundaryParams{}), tolerance, candidate) > kMaxBareTurf)
         continue;
     }
-    if (pairs) work.on_ellipse = work.support;
+    if (&c->on != &work.on_ellipse) work.on_ellipse = c->on;
     out.push_back(candidate.ellipse);
-    out.back().confidence = candidate_share;
+    out.back().confidence = c->share;
     return;
   }
   std::fill(work.on_ellipse.begin(), work.on_ellipse.end(), std::uint8_t{0});

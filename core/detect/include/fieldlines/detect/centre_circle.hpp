@@ -46,13 +46,16 @@
 //
 // The fit is written out (a 5x5 solve on the stack) rather than cv::fitEllipse, which allocates
 // per call: warm detect allocates nothing with this stage on.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <opencv2/core/mat.hpp>
+#include <opencv2/core/types.hpp>
 #include <span>
 #include <vector>
 
 #include "fieldlines/detect/field_features.hpp"
+#include "fieldlines/detect/ground_camera.hpp"
 
 namespace fieldlines {
 
@@ -69,13 +72,29 @@ struct CircleWorkspace {
   std::vector<int> order;                // pieces by length
   std::vector<std::uint8_t> support;     // per piece: along the ellipse being tried
   std::vector<Point> refined;            // the paint's centre read round the ellipse
+  // The fit on the turf (camera known):
+  struct GroundPiece {
+    std::array<cv::Point2d, 3> at;  // the piece's samples on the turf, metres
+    bool valid = false;             // all three below the horizon, a chord's length
+  };
+  struct GroundSample {
+    double u = 0, v = 0;  // px
+    double scale = 0;     // metres per px there
+  };
+  std::vector<GroundPiece> ground;           // per piece
+  std::vector<std::uint8_t> ground_support;  // per piece: along the circle on the turf
+  std::vector<GroundSample> ground_samples;  // the support's samples, for the refinement
+  std::array<double, 5> ground_fit{};        // centre x, y, radius (m); pitch, roll offsets (rad)
 };
 
 // Fits the centre circle to `pieces` (stripe centre lines of short segments) into `out`
 // (cleared first: empty or one ellipse); `work.on_ellipse[i]` tells whether piece i is on it.
 // `bgr`: the 8-bit BGR frame they were found in, for the refit on the paint; empty: none.
 // `field`: the frame's field colour, for the bare-turf check; none: no check.
+// `camera`: the camera over the field, when known, for the fit on the turf of a circle of
+// `radius_m` metres (ground_camera.hpp); none: image fits alone.
 void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, std::vector<MarkingEllipse>& out,
-                        const cv::Mat& bgr = {}, const std::optional<Rgb>& field = std::nullopt);
+                        const cv::Mat& bgr = {}, const std::optional<Rgb>& field = std::nullopt,
+                        const std::optional<GroundCamera>& camera = std::nullopt, double radius_m = 0.75);
 
 }  // namespace fieldlines

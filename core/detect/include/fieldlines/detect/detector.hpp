@@ -17,6 +17,7 @@
 #include "fieldlines/detect/detector_params.hpp"
 #include "fieldlines/detect/field_boundary.hpp"
 #include "fieldlines/detect/field_features.hpp"
+#include "fieldlines/detect/ground_camera.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
@@ -45,6 +46,8 @@ class LineDetector {
   GradientViews compute_gradients(const cv::Mat& image);
 
   const DetectorParams& params() const { return params_; }
+  // Throws fieldlines::Error when `params` fail validate(), keeping the ones it had.
+  void set_params(const DetectorParams& params);
   const Thresholds& thresholds() const { return thresholds_; }
   void set_thresholds(const Thresholds& t) { thresholds_ = t; }
 
@@ -61,6 +64,14 @@ class LineDetector {
   // (intersections.hpp), the field boundary as field_boundary() has it; empty otherwise.
   const FieldFeatures& features() const;
 
+  // The camera over the field for the next detect() calls (ground_camera.hpp): with it, the
+  // centre circle is also fitted on the turf as a circle of DetectorParams::centre_circle_radius,
+  // which finds a circle the frame shows one arc of. Set it per frame when the pose changes (a
+  // walking robot's); none (the default): image fits alone. Throws fieldlines::Error when it
+  // fails validate().
+  void set_camera(const std::optional<GroundCamera>& camera);
+  const std::optional<GroundCamera>& camera() const { return camera_; }
+
  private:
   struct Impl;
   const cv::Mat* normalise(const cv::Mat& image);  // to 8-bit BGR; nullptr if smaller than 3x3
@@ -69,6 +80,7 @@ class LineDetector {
   DetectorParams params_;
   Thresholds thresholds_;
   bool find_boundary_ = false;
+  std::optional<GroundCamera> camera_;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -47,6 +47,9 @@ struct DetectorParams {
   // is drawn a second time for pieces from piece_length px, which the junctions take too.
   bool centre_circle = false;
   int piece_length = 10;
+  // The centre circle's radius on the turf, metres (the Humanoid Kid and SPL rules: 0.75; SSL 0.5;
+  // MSL 2): used only when the camera is known (LineDetector::set_camera), to fit it on the turf.
+  double centre_circle_radius = 0.75;
   // A field darker than this (R + G + B of its colour, light.hpp) lowers the gradient threshold
   // in proportion for that frame, so a dim frame keeps the edges a bright one has; 0: off, the
   // method's fixed threshold.
@@ -76,7 +79,7 @@ struct ParamSpec {
   bool in_files = true;     // written into and read from thresholds and project files
 };
 
-inline constexpr std::array<ParamSpec, 23> kDetectorParamSpecs{{
+inline constexpr std::array<ParamSpec, 24> kDetectorParamSpecs{{
     {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
      .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
     {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
@@ -123,6 +126,8 @@ inline constexpr std::array<ParamSpec, 23> kDetectorParamSpecs{{
      .help = "fit the centre circle to short stripe pieces of a second drawing (runs the stripes stage too)"},
     {.name = "piece_length", .member = &DetectorParams::piece_length, .range = {3, 10000},
      .unit = "px", .help = "shortest piece of the second drawing (the centre circle's, the junctions' too)", .slider = {5, 60}},
+    {.name = "centre_circle_radius", .member = &DetectorParams::centre_circle_radius, .range = {0, 100, true},
+     .unit = "m", .help = "the centre circle's radius on the turf, for its fit when the camera is known", .slider = {0.25, 3}},
     {.name = "dark_field", .member = &DetectorParams::dark_field, .range = {0, 765},
      .help = "a field darker than this (R + G + B) lowers the gradient threshold in proportion; 0: off",
      .slider = {0, 765}},

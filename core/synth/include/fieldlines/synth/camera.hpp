@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "fieldlines/detect/ground_camera.hpp"
 #include "fieldlines/synth/field.hpp"
 #include "fieldlines/train/random.hpp"
 
@@ -23,6 +24,10 @@ struct Pose {
   Eigen::Vector3d position{0, 0, 0.15};
   double yaw = 0, pitch = 0, roll = 0;  // radians
 };
+
+// The camera as the detector takes it (ground_camera.hpp): its intrinsics, pitch, roll and
+// height above the turf.
+GroundCamera to_ground_camera(const Intrinsics& k, const Pose& pose);
 
 class Camera {
  public:

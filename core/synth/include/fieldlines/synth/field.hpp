@@ -57,4 +57,7 @@ struct FieldModel {
 // Throws fieldlines::Error on a line width outside (0, 0.3] m or a negative wall height.
 FieldModel make_field(const FieldParams& params);
 
+// The radius of the field's centre circle (its full-turn arc), metres; 0 when it has none.
+double centre_circle_radius(const FieldModel& field);
+
 }  // namespace fieldlines::synth
