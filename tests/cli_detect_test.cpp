@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <set>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cli_test_support.hpp"
+#include "fieldlines/detect/camera_file.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/data/reference_csv.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
@@ -195,6 +197,57 @@ TEST_F(CliDetect, FeaturesWriteIntersectionsAndEllipses) {
   EXPECT_TRUE(read_json(off)["images"][0].at("intersections").empty());
   EXPECT_TRUE(read_json(off)["images"][0].at("ellipses").empty());
   EXPECT_EQ(run({"detect", "--features", "--no-stripes", path.string()}).exit_code, 2);
+}
+
+// --camera: a fixed camera over the field fits the centre circle on the turf as the library
+// does with the same camera; a bad camera file stops the run with a message naming the field.
+TEST_F(CliDetect, CameraFileFitsTheCircleOnTheTurfAsTheLibrary) {
+  const fieldlines::GroundCamera camera{.fx = 640, .fy = 640, .cx = 319.5, .cy = 239.5,
+                                        .pitch_rad = 30 * std::numbers::pi / 180, .roll_rad = 0, .height_m = 0.6};
+  cv::Mat img(480, 640, CV_8UC3, cv::Scalar(50, 140, 40));
+  const fieldlines::GroundProjection projection(camera);
+  std::vector<cv::Point> outline;  // a circle of 0.75 m, 0.8 m ahead: the frame shows its far arc
+  for (int k = 0; k < 720; ++k) {
+    const double a = 2 * std::numbers::pi * k / 720;
+    if (const auto p = projection.to_image({0.8 + 0.75 * std::cos(a), 0.75 * std::sin(a)}))
+      if (std::abs(p->x) < 5000 && std::abs(p->y) < 5000) outline.emplace_back(cvRound(p->x), cvRound(p->y));
+  }
+  cv::polylines(img, outline, true, cv::Scalar(255, 255, 255), 7, cv::LINE_AA);
+  cv::Mat noise(img.size(), CV_8UC3);
+  cv::randu(noise, 0, 8);
+  img += noise;
+  const fs::path path = write_image("arc.png", img), out = dir_ / "out.json";
+  fs::path file = write_bytes("camera.json", fieldlines::to_json(camera).dump(2));
+  const CliRun ran = run({"detect", "--features", "--camera", file.string(), "--json", out.string(), path.string()});
+  ASSERT_EQ(ran.exit_code, 0) << ran.err;
+  fieldlines::LineDetector detector(fieldlines::with_every_feature({}));
+  detector.set_camera(fieldlines::load_camera_file(file));
+  detector.detect(img);
+  ASSERT_EQ(detector.features().ellipses.size(), 1u) << "the test's premise: the library finds it with the camera";
+  const json ellipses = read_json(out)["images"][0].at("ellipses");
+  ASSERT_EQ(ellipses.size(), 1u);
+  EXPECT_FLOAT_EQ(ellipses[0].at("cy").get<float>(), detector.features().ellipses[0].cy);
+  EXPECT_GT(ellipses[0].at("cy").get<float>(), 480.f) << "its centre lies below the frame";
+
+  json bad = fieldlines::to_json(camera);
+  bad["height_m"] = -1;
+  file = write_bytes("camera.json", bad.dump());
+  CliRun r = run({"detect", "--camera", file.string(), path.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("height"), std::string::npos) << r.err;
+  bad = fieldlines::to_json(camera);
+  bad.erase("fx");
+  file = write_bytes("camera.json", bad.dump());
+  r = run({"detect", "--camera", file.string(), path.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("'fx'"), std::string::npos) << r.err;
+  file = write_bytes("camera.json", "{\"format\": \"fieldlines-camera\", ");
+  r = run({"detect", "--camera", file.string(), path.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("malformed JSON"), std::string::npos) << r.err;
+  r = run({"detect", "--camera", (dir_ / "none.json").string(), path.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("none.json"), std::string::npos) << r.err;
 }
 
 TEST_F(CliDetect, FoldersAreSortedAndThreadsKeepTheInputOrder) {

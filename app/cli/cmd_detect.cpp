@@ -13,6 +13,7 @@
 
 #include "app/cli/detections_json.hpp"
 #include "app/cli/detector_params_help.hpp"
+#include "fieldlines/detect/camera_file.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/data/image_io.hpp"
@@ -57,6 +58,10 @@ options:
                     also a thresholds file parameter (stripes, intersections, centre_circle).
                     The circle draws the frame a second time (1.5-2.5x a plain detect in all);
                     without it, stripes and junctions cost about 1.1-1.2x
+  --camera FILE     a fixed camera over the field (a camera file: intrinsics, pitch, roll and
+                    height; docs/detector.md): the centre circle is also fitted on the turf as
+                    a circle of the thresholds file's centre_circle_radius, which finds one the
+                    frame shows a single arc of
   --threads N       images processed in parallel, one detector per thread (default 1);
                     outputs keep the input order
   --quiet           no per-image lines on stdout, no progress on stderr
@@ -80,6 +85,7 @@ examples:
   fieldlines detect --thresholds trained.json --csv segments.csv frames/
   fieldlines detect --video match.mp4 --video-out match-lines.avi
   fieldlines detect --thresholds robot.json --video /dev/video0 --max-frames 600
+  fieldlines detect --features --camera head.json --json out/lines.json frames/
 )";
 
 // The options, the detector parameters a --thresholds file sets, the examples.
@@ -89,6 +95,7 @@ struct Options {
   std::optional<fs::path> thresholds, json, csv, draw;  // json and csv checked as output paths
   int threads = 1;
   bool quiet = false;
+  std::optional<GroundCamera> camera;
   std::optional<bool> stripes;  // overrides the thresholds file's
   bool features = false;        // turns every feature stage on
   std::vector<std::string> paths;
@@ -111,6 +118,7 @@ Options parse(const ParsedArgs& a) {
   if (const auto v = a.value("--draw")) o.draw = *v;
   o.threads = a.int_or("--threads", 1, 1, 256);
   o.quiet = a.flag("--quiet");
+  if (const auto v = a.value("--camera")) o.camera = load_camera_file(*v);
   if (a.flag("--stripes") && a.flag("--no-stripes")) throw Error("--stripes and --no-stripes exclude each other");
   if (a.flag("--stripes")) o.stripes = true;
   if (a.flag("--no-stripes")) o.stripes = false;
@@ -171,7 +179,8 @@ std::string summary_line(const ImageDetections& d) {
 
 int cmd_detect(const Args& args) {
   const auto parsed = parse_or_print_help(
-      args, {"--thresholds", "--json", "--csv", "--draw", "--threads", "--video", "--video-out", "--max-frames"},
+      args, {"--thresholds", "--json", "--csv", "--draw", "--threads", "--video", "--video-out", "--max-frames",
+             "--camera"},
       {"--quiet", "--stripes", "--no-stripes", "--features"}, help_text());
   if (!parsed) return 0;
   const Options opt = parse(*parsed);
@@ -181,7 +190,7 @@ int cmd_detect(const Args& args) {
     ThresholdsFile video_config;
     if (opt.thresholds) video_config = load_thresholds_file(*opt.thresholds);
     apply_feature_options(opt, video_config.detector);
-    return run_video_detection({*opt.video, opt.video_out, opt.max_frames, opt.quiet}, video_config);
+    return run_video_detection({*opt.video, opt.video_out, opt.max_frames, opt.quiet, opt.camera}, video_config);
   }
   if (opt.video_out || opt.max_frames >= 0) throw Error("--video-out and --max-frames go with --video");
   if (opt.paths.empty()) throw Error("no PATH given: name at least one image or folder (see --help)");
@@ -209,6 +218,7 @@ int cmd_detect(const Args& args) {
   for (int w = 0; w < workers; ++w) {
     detectors.emplace_back(config.detector, config.thresholds);
     detectors.back().set_find_field_boundary(opt.json || opt.draw);  // both show it
+    detectors.back().set_camera(opt.camera);
   }
 
   std::vector<ItemResult> results(images.size());

@@ -48,6 +48,7 @@ cv::VideoCapture open_source(const std::string& source) {
 int run_video_detection(const VideoOptions& options, const ThresholdsFile& config) {
   cv::VideoCapture capture = open_source(options.source);
   LineDetector detector(config.detector, config.thresholds);
+  detector.set_camera(options.camera);
   cv::VideoWriter writer;
   std::vector<Segment> segments;
   std::vector<double> latencies;  // grab + decode + detect (+ draw), per frame

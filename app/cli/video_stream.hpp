@@ -7,6 +7,8 @@
 
 #include "fieldlines/detect/thresholds_file.hpp"
 
+#include "fieldlines/detect/ground_camera.hpp"
+
 namespace fieldlines::cli {
 
 struct VideoOptions {
@@ -14,6 +16,7 @@ struct VideoOptions {
   std::optional<std::filesystem::path> overlay_out;  // MJPG .avi with the overlays drawn
   long max_frames = -1;                       // stop after this many frames (-1: until the end)
   bool quiet = false;
+  std::optional<GroundCamera> camera;         // a fixed camera over the turf (--camera)
 };
 
 // Returns the exit code; throws fieldlines::Error when the source cannot be opened.
