@@ -23,6 +23,7 @@
 
 #include "arrays.hpp"
 #include "fieldlines/data/image_io.hpp"
+#include "fieldlines/detect/camera_file.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
@@ -151,6 +152,31 @@ class Detector {
     }
     config_ = std::move(config);
     find_boundary_with_features();
+    detector_.set_camera(camera_);  // a new detector starts with none
+  }
+
+  // The camera file's form without its header: {fx, fy, cx, cy, pitch_deg, roll_deg, height_m}.
+  py::object camera() {
+    const auto lock = lock_without_gil(mutex_);
+    return camera_ ? to_python(camera_json_) : py::none();
+  }
+
+  void set_camera(const py::handle& camera) {
+    std::optional<GroundCamera> parsed;
+    nlohmann::json given;
+    if (!camera.is_none()) {
+      given = from_python(camera, "camera");
+      if (!given.is_object()) throw Error("camera: expected a dict or None");
+      nlohmann::json j = given;
+      const nlohmann::json header = to_json(GroundCamera{});  // the camera file's format and version
+      for (const char* key : {"format", "version"})
+        if (!j.contains(key)) j[key] = header[key];
+      parsed = ground_camera_from_json(j, "camera");
+    }
+    const auto lock = lock_without_gil(mutex_);
+    detector_.set_camera(parsed);
+    camera_ = parsed;
+    camera_json_ = std::move(given);  // returned as given: degrees stay the user's digits
   }
 
  private:
@@ -162,6 +188,8 @@ class Detector {
 
   std::mutex mutex_;
   ThresholdsFile config_;
+  std::optional<GroundCamera> camera_;
+  nlohmann::json camera_json_;  // the dict it was given
   LineDetector detector_;
   std::vector<Segment> segments_;  // reused: its capacity stays between calls
 };
@@ -292,6 +320,12 @@ A C-contiguous image (or a crop of one) is read without a copy; the GIL is relea
 "detector" (stripes, intersections, centre_circle; the boundary with any of them).)")
       .def_property("thresholds", &Detector::thresholds, &Detector::set_thresholds,
                     "The detector's thresholds file as a dict; assign a dict to change it.")
+      .def_property("camera", &Detector::camera, &Detector::set_camera,
+                    R"(The camera over the field, or None (the default): a dict {fx, fy, cx, cy (px),
+pitch_deg (down from the horizontal), roll_deg, height_m (above the turf)}, as a camera file
+holds it. With it, the centre circle is also fitted on the turf as a circle of the thresholds'
+detector "centre_circle_radius", which finds one the frame shows a single arc of. Assign per
+frame when the pose changes; a bad value raises ValueError and keeps the camera it had.)")
       .def("_time_detect", &Detector::time_detect, py::arg("image"), py::arg("repeat") = 1,
            "Milliseconds of each of `repeat` detect() calls timed in C++ (for python/bench.py).")
       .def("__repr__", [](Detector&) { return std::string("<fieldlines.LineDetector>"); });

@@ -52,3 +52,58 @@ def test_a_t_junction_and_the_markings():
     assert 0 < j["confidence"] <= 1
     assert f["ellipses"] == []
     assert f["field_boundary"], "the boundary comes with the feature stages"
+
+
+CAMERA = {"fx": 640.0, "fy": 640.0, "cx": 319.5, "cy": 239.5, "pitch_deg": 30.0, "roll_deg": 0.0, "height_m": 0.6}
+
+
+def circle_arc_frame():
+    """The far arc of a 0.75 m circle 0.8 m ahead of CAMERA (its image ellipse's centre lies below
+    the frame): pixels whose ray meets the turf within the paint's width of the circle."""
+    rows, cols = np.mgrid[0:480, 0:640].astype(float)
+    pitch = math.radians(CAMERA["pitch_deg"])
+    x, y = (cols - CAMERA["cx"]) / CAMERA["fx"], (rows - CAMERA["cy"]) / CAMERA["fy"]
+    down = y * math.cos(pitch) + math.sin(pitch)  # the ray's fall per unit along the optical axis
+    ahead = math.cos(pitch) - y * math.sin(pitch)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.where(down > 1e-6, CAMERA["height_m"] / down, np.inf)
+    gx, gy = t * ahead, -t * x
+    ring = np.abs(np.hypot(gx - 0.8, gy) - 0.75) <= 0.025
+    frame = np.empty((480, 640, 3), np.uint8)
+    frame[:] = (50, 140, 40)
+    frame[ring] = 255
+    noise = np.random.default_rng(3).normal(0, 4, frame.shape)
+    return np.clip(frame + noise, 0, 255).astype(np.uint8)
+
+
+def test_the_camera_fits_the_circle_on_the_turf():
+    detector = with_features(True)
+    assert detector.camera is None
+    frame = circle_arc_frame()
+    detector.camera = CAMERA
+    assert detector.camera == CAMERA
+    detector.detect(frame)
+    ellipses = detector.features()["ellipses"]
+    assert len(ellipses) == 1, ellipses
+    assert ellipses[0]["cy"] > 480, "its centre lies below the frame"
+    # The camera survives a change of thresholds, and None removes it.
+    thresholds = detector.thresholds
+    thresholds["detector"]["piece_length"] = 12
+    detector.thresholds = thresholds
+    assert detector.camera == CAMERA
+    detector.camera = None
+    assert detector.camera is None
+
+
+def test_a_bad_camera_is_refused_and_the_old_one_kept():
+    detector = with_features(True)
+    detector.camera = CAMERA
+    for bad in ({**CAMERA, "height_m": -1}, {k: v for k, v in CAMERA.items() if k != "fx"},
+                {**CAMERA, "pitch_deg": float("nan")}, {**CAMERA, "roll_deg": "level"}, [1, 2]):
+        try:
+            detector.camera = bad
+        except ValueError as e:
+            assert "camera" in str(e)
+        else:
+            raise AssertionError(f"accepted {bad}")
+    assert detector.camera == CAMERA
