@@ -283,7 +283,9 @@ doc_lines += ["", "### Field features on synthetic fields", "",
               "it), every feature stage on, against the truth of each frame's field and camera. 40 frames",
               "per scene and seed in all five lights; seeds 4242 and 777 held out from tuning the stages,",
               "9001 and 9002 fresh. Targets: junction precision 0.90, recall 0.70, type 0.90; circle 80 %;",
-              "boundary 95 %. What each column means and the choices behind the stages:",
+              "boundary 95 %. The last rows give the detector each frame's camera, exactly or off as a",
+              "robot's pose estimate is (eval --truth-camera --camera-error), so the circle is also fitted",
+              "on the turf. What each column means and the choices behind the stages:",
               "[detector.md](detector.md#intersections-and-the-centre-circle-optional).", "",
               "```sh", "bash scripts/features_table.sh", "```", ""]
 doc_lines += read("features.md").rstrip("\n").split("\n")

@@ -4,8 +4,9 @@
 # --features), as one Markdown table on stdout. Per scene, 40 frames in all five lights per
 # seed; thresholds built in, or calibrated label-free on seed 1. Seeds 4242 and 777 are held
 # out from tuning the stages; 9001 and 9002 were scored once, on a finished build. Every stage on,
-# then without the centre circle (the junctions from the detector's own drawing alone). The last
-# row counts paint from 0.5 px wide as visible instead of 1 px (--min-width).
+# then without the centre circle (the junctions from the detector's own drawing alone). A row
+# counts paint from 0.5 px wide as visible instead of 1 px (--min-width); the last rows give the
+# detector each frame's camera (the circle also fitted on the turf).
 #   usage: bash scripts/features_table.sh [OUT_DIR]      (default build/features-table)
 #   env:   FIELDLINES_BIN (default build/release/app/cli/fieldlines), N (frames per set, 40)
 set -euo pipefail
@@ -63,3 +64,15 @@ for stages in "every stage|--features|" "no centre circle||_lines"; do
 done
 row "seeds 4242 + 777, paint from 0.5 px visible | every stage | built-in | both" \
   --gt "$out/ssl_4242" "$out/ssl_777" "$out/kid_4242" "$out/kid_777" --min-width 0.5 --features
+# The camera known (eval --truth-camera): the centre circle also fitted on the turf, with each
+# frame's camera exactly, or off as a robot's pose estimate is (pitch and roll by up to 1 or 2
+# degrees, height by up to 5 or 10 %, drawn per frame).
+for pair in "4242 777 held out" "9001 9002 fresh"; do
+  read -r a b kind <<<"$pair"
+  for error in "exactly|" "within 1 deg and 5 %|1,0.05" "within 2 deg and 10 %|2,0.1"; do
+    IFS='|' read -r what amount <<<"$error"
+    row "seeds $a + $b ($kind) | every stage, camera known $what | built-in | both" \
+      --gt "$out/ssl_$a" "$out/ssl_$b" "$out/kid_$a" "$out/kid_$b" --features --truth-camera \
+      ${amount:+--camera-error "$amount"}
+  done
+done
