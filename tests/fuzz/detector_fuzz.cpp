@@ -87,10 +87,30 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     lines.detect(image);
     if (!lines.features().ellipses.empty()) __builtin_trap();
     check_junctions(lines.features().intersections);
-    for (const fieldlines::MarkingEllipse& e : f.ellipses)
-      if (!std::isfinite(e.cx) || !std::isfinite(e.cy) || !(e.width > 0) || !(e.height > 0) || !std::isfinite(e.width) ||
-          !std::isfinite(e.height) || !std::isfinite(e.angle_deg) || !(e.confidence > 0) || e.confidence > 1)
-        __builtin_trap();
+    const auto check_ellipses = [](const std::vector<fieldlines::MarkingEllipse>& ellipses) {
+      if (ellipses.size() > 1) __builtin_trap();
+      for (const fieldlines::MarkingEllipse& e : ellipses)
+        if (!std::isfinite(e.cx) || !std::isfinite(e.cy) || !(e.width > 0) || !(e.height > 0) ||
+            !std::isfinite(e.width) || !std::isfinite(e.height) || !std::isfinite(e.angle_deg) ||
+            !(e.confidence > 0) || e.confidence > 1)
+          __builtin_trap();
+    };
+    check_ellipses(f.ellipses);
+    // The camera known (the circle also fitted on the turf), a pose drawn from the input's first
+    // bytes, changed per frame as a walking robot's: sane ellipses, and the same as a fresh
+    // detector's with that camera.
+    const fieldlines::GroundCamera camera{.fx = 50.0 + 4 * data[0], .fy = 50.0 + 4 * data[1],
+                                          .cx = 0.5 * width, .cy = 0.5 * height,
+                                          .pitch_rad = (5 + data[2] % 55) * 0.01745, .roll_rad = ((data[3] % 21) - 10) * 0.01745,
+                                          .height_m = 0.2 + 0.01 * data[3]};
+    static fieldlines::LineDetector with_camera(kStripes);
+    with_camera.set_camera(camera);
+    with_camera.detect(image);
+    fieldlines::LineDetector fresh_camera(kStripes);
+    fresh_camera.set_camera(camera);
+    fresh_camera.detect(image);
+    check_ellipses(with_camera.features().ellipses);
+    if (with_camera.features().ellipses.size() != fresh_camera.features().ellipses.size()) __builtin_trap();
   } catch (const fieldlines::Error&) {
     // Unsupported types are reported, not crashed on.
   }
