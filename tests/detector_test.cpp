@@ -176,6 +176,15 @@ TEST(Detector, ValidatesParameters) {
   p = {};
   p.threads = 64;
   EXPECT_NO_THROW(LineDetector{p});
+  // set_params validates too, and keeps the parameters it had when it refuses.
+  LineDetector detector;
+  p = {};
+  p.centre_circle_radius = 0;
+  EXPECT_THROW(detector.set_params(p), Error);
+  EXPECT_EQ(detector.params(), DetectorParams{});
+  p.centre_circle_radius = 2;
+  detector.set_params(p);
+  EXPECT_EQ(detector.params().centre_circle_radius, 2);
 }
 
 void expect_same_segments(const std::vector<Segment>& got, const std::vector<Segment>& expected,
