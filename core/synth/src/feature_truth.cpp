@@ -160,7 +160,7 @@ FeatureTruth feature_truth(const GroundTruth& truth, const cv::Mat& mask, float 
   }
 
   for (const PaintedLine& line : field.lines) {
-    if (!line.arc || line.sweep < 2 * std::numbers::pi - 1e-6) continue;
+    if (!line.full_circle()) continue;
     std::vector<cv::Point2f> points;
     int visible = 0;
     for (int n = 0; n < kCircleSamples; ++n) {

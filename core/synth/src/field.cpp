@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "fieldlines/detect/error.hpp"
 
@@ -61,6 +60,8 @@ Scene parse_scene(std::string_view text) {
 }
 
 double PaintedLine::length() const { return arc ? radius * std::abs(sweep) : (b - a).norm(); }
+
+bool PaintedLine::full_circle() const { return arc && std::abs(sweep) >= 2 * kPi - 1e-9; }
 
 Eigen::Vector2d PaintedLine::point(double s) const {
   if (!arc) return a + (b - a) * (s / std::max(length(), 1e-12));
@@ -138,7 +139,7 @@ FieldModel make_field(const FieldParams& params) {
 
 double centre_circle_radius(const FieldModel& field) {
   for (const PaintedLine& line : field.lines)
-    if (line.arc && line.sweep >= 2 * std::numbers::pi - 1e-6) return line.radius;
+    if (line.full_circle()) return line.radius;
   return 0;
 }
 

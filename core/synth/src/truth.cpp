@@ -137,7 +137,7 @@ std::vector<TruthFeature> extract_features(const World& w, const Camera& cam, co
         [&](const Vector3d& p, const Vector2d& t, const Vector2d& t_img) {
           return image_width(cam, p, Vector2d(-t.y(), t.x()), line.width, t_img);
         });
-    const bool closed = line.arc && std::abs(std::abs(line.sweep) - 6.283185307179586) < 1e-9;
+    const bool closed = line.full_circle();
     emit_runs(runs, closed, Label::Marking, line.name, params.tolerance, out);
   }
   if (w.field.wall_height > 0) {

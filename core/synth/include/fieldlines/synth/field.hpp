@@ -26,6 +26,7 @@ struct PaintedLine {
   std::string name;
 
   double length() const;
+  bool full_circle() const;                 // an arc of the whole turn (the centre circle)
   Eigen::Vector2d point(double s) const;    // s in [0, length()]
   Eigen::Vector2d tangent(double s) const;  // unit
   // Distance from p to the centreline; `normal` gets the unit direction from the centreline
