@@ -40,6 +40,19 @@ void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& pa
   workers_.run(bands, band);
 }
 
+void ElsedEngine::AnchorCells::allow(float x0, float y0, float x1, float y1) {
+  // Off the frame clamps to an edge cell, NaN to the first: never outside the mask.
+  const auto cell_of = [&](float v, int count) {
+    const float px = v >= 0 ? std::min(v, 1e6f) : 0.f;
+    return std::min(static_cast<int>(px) / cell, count - 1);
+  };
+  if (columns <= 0 || rows <= 0) return;
+  const int c0 = cell_of(std::min(x0, x1), columns), c1 = cell_of(std::max(x0, x1), columns);
+  const int r0 = cell_of(std::min(y0, y1), rows), r1 = cell_of(std::max(y0, y1), rows);
+  for (int r = r0; r <= r1; ++r)
+    std::fill_n(allowed.begin() + static_cast<std::ptrdiff_t>(r) * columns + c0, c1 - c0 + 1, std::uint8_t{1});
+}
+
 void ElsedEngine::find_anchors(int scan_interval, int threshold, const cv::Mat& bgr, const AnchorLimits& limits) {
   constexpr int kBrightReach = 5;
   const int w = maps_.width, h = maps_.height;
@@ -76,7 +89,7 @@ void ElsedEngine::find_anchors(int scan_interval, int threshold, const cv::Mat& 
     for (int k = 0; k < columns; ++k) {
       if (y < column_first_[static_cast<std::size_t>(k)]) continue;
       const int x = 1 + k * scan_interval, i = y * w + x;
-      if (g[i] == 0) continue;
+      if (g[i] == 0 || (limits.cells && !limits.cells->allows(x, y))) continue;
       // A local maximum across the edge by at least `threshold`.
       const bool across_rows = dir_of(maps_.state[i]) == EdgeDir::Horizontal;
       const int step = across_rows ? w : 1;

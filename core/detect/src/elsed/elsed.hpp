@@ -30,10 +30,25 @@ class ElsedEngine {
   // segments from `min_line_length` px (the short pieces of curves), into `out` (cleared first).
   // `limits` keeps anchors from where no piece is wanted (edges drawn from the others may still
   // run there).
+  // Where anchors may lie, in square cells of `cell` px (a coarse mask: cheap to clear and fill).
+  struct AnchorCells {
+    int cell = 8, columns = 0, rows = 0;
+    std::vector<std::uint8_t> allowed;  // row-major, columns x rows
+    void reset(int width, int height) {
+      columns = (width + cell - 1) / cell, rows = (height + cell - 1) / cell;
+      allowed.assign(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows), 0);
+    }
+    // Allows every cell that the box [x0, x1] x [y0, y1] (px, clamped to the frame) touches.
+    void allow(float x0, float y0, float x1, float y1);
+    bool allows(int x, int y) const {
+      return allowed[static_cast<std::size_t>(y / cell) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(x / cell)];
+    }
+  };
   struct AnchorLimits {
     std::span<const int> first_rows;  // one per column: anchors from that row down; empty: all
     int min_bright_sum = 0;           // a pixel this bright (B + G + R) within 5 px across...
     float max_chroma = 2;             // ...and this grey (near_grey, field_pixel.hpp); 2: any
+    const AnchorCells* cells = nullptr;  // anchors only in the cells it allows; null: anywhere
   };
   // `keep` drops segments by their colours before their validation (colour_gradients.hpp).
   void redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,
