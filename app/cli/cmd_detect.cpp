@@ -56,7 +56,7 @@ options:
   --features        every field feature stage on: the stripes, their L/T/X intersections
                     ("intersections" in --json) and the centre circle ("ellipses"); each is
                     also a thresholds file parameter (stripes, intersections, centre_circle).
-                    The circle draws the frame a second time (1.5-2.5x a plain detect in all);
+                    The circle draws the frame a second time (1.5-2.1x a plain detect in all);
                     without it, stripes and junctions cost about 1.1-1.2x
   --camera FILE     a fixed camera over the field (a camera file: intrinsics, pitch, roll and
                     height; docs/detector.md): the centre circle is also fitted on the turf as
