@@ -344,15 +344,11 @@ float bare_turf_share(const cv::Mat& bgr, const FieldPixel& pixel, float toleran
   return seen > 0 ? static_cast<float>(bare) / static_cast<float>(seen) : 0.f;
 }
 
-}  // namespace
-
-void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, std::vector<MarkingEllipse>& out,
-                        const cv::Mat& bgr, const std::optional<Rgb>& field, const std::optional<GroundCamera>& camera,
-                        double radius_m) {
-  out.clear();
+// The chains' ellipse: pieces that chain by small bends, the best seed of one chain or two, and
+// every other chain that joins it; its share of the turn (0: none) into `fit`, its pieces in
+// work.on_ellipse.
+float fit_from_chains(std::span<const Marking> pieces, CircleWorkspace& work, Fit& fit, cv::Size frame) {
   const std::size_t n = pieces.size();
-  const cv::Size frame = bgr.empty() ? cv::Size() : bgr.size();
-
   work.on_ellipse.assign(n, 0);
   work.parent.resize(n);
   work.chain_size.assign(n, 0);
@@ -409,7 +405,6 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
   // The seed's ellipse, then every other chain whose points lie on it with the seed's (the circle
   // cut by the halfway line or a robot is several chains): each joins when the fit of both still
   // passes and covers more of the turn.
-  Fit fit;
   float share = 0;
   if (best_chain >= 0) {
     const float tolerance = tolerance_of(best_chain);
@@ -436,56 +431,71 @@ void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, 
       }
     }
   }
-  // The chains' ellipse and the pairs', the one covering more of the turn first, after the one
-  // on the turf when the camera is known: the first the frame confirms is the circle. Given the
-  // frame, the image fits are refitted to the paint (the turf's is exact from the pose), and an
-  // ellipse is refused where it runs over bare turf.
-  Fit paired;
-  const float paired_share = fit_from_pairs(pieces, work, paired, frame);
-  Fit grounded;
-  float ground_share = 0;
-  if (camera) {
-    ground_share = fit_on_ground(pieces, *camera, radius_m, work, grounded);
-    if (ground_share < required_coverage(grounded, frame, kMinGroundCoverage)) ground_share = 0;
-  }
-  // The chains' pieces stay in work.on_ellipse, the pairs' in work.support, the turf's in
-  // work.ground_support, until one is kept.
-  struct Candidate {
-    const Fit& fit;
-    float share;
-    const std::vector<std::uint8_t>& on;
-  };
-  const Candidate chained{fit, share, work.on_ellipse}, pairs{paired, paired_share, work.support},
-      turf{grounded, ground_share, work.ground_support};
-  const bool pairs_first = paired_share > share;
-  const std::array<const Candidate*, 3> order{&turf, pairs_first ? &pairs : &chained, pairs_first ? &chained : &pairs};
-  const bool read_frame = !bgr.empty() && bgr.type() == CV_8UC3;
-  for (const Candidate* c : order) {
-    if (c->share <= 0) continue;
-    Fit candidate = c->fit;
-    if (read_frame) {
-      // The turn the ellipse's pieces cover, and their tolerance (half their mean width).
-      work.points.clear();
-      float width = 0;
-      int count = 0;
-      for (std::size_t i = 0; i < n; ++i)
-        if (c->on[i]) add_samples(pieces[i], work.points), width += pieces[i].width, ++count;
-      const float tolerance = std::max(2.5f, width / static_cast<float>(std::max(count, 1)) / 2);
-      if (count > 0 && c == &turf) {
-        // The paint's points refine the circle and the pose on the turf.
-        read_paint(bgr, tolerance, work, candidate);
-        if (work.refined.size() >= kMinPaintPoints) refit_on_ground(work.refined, *camera, radius_m, tolerance, work, candidate);
-      } else if (count > 0) {
-        refine_on_paint(bgr, tolerance, work, candidate);
-      }
-      if (field && bare_turf_share(bgr, FieldPixel(*field, FieldBoundaryParams{}), tolerance, candidate) > kMaxBareTurf)
-        continue;
+  return share;
+}
+
+// A candidate ellipse and its pieces (flags per piece, into a workspace vector).
+struct Candidate {
+  Fit fit;
+  float share = 0;
+  const std::vector<std::uint8_t>* on = nullptr;
+};
+
+// Whether the frame confirms `c`: refitted to the paint (on the turf when `camera` is given, else
+// as an image conic), and not over bare turf; its ellipse into `out` and its pieces into
+// work.on_ellipse when it is kept.
+bool accept(const Candidate& c, std::span<const Marking> pieces, const cv::Mat& bgr, const std::optional<Rgb>& field,
+            const GroundCamera* camera, double radius_m, CircleWorkspace& work, std::vector<MarkingEllipse>& out) {
+  if (c.share <= 0) return false;
+  Fit candidate = c.fit;
+  const std::vector<std::uint8_t>& on = *c.on;
+  if (!bgr.empty() && bgr.type() == CV_8UC3) {
+    // The turn the ellipse's pieces cover, and their tolerance (half their mean width).
+    work.points.clear();
+    float width = 0;
+    int count = 0;
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      if (on[i]) add_samples(pieces[i], work.points), width += pieces[i].width, ++count;
+    const float tolerance = std::max(2.5f, width / static_cast<float>(std::max(count, 1)) / 2);
+    if (count > 0 && camera) {
+      // The paint's points refine the circle and the pose on the turf.
+      read_paint(bgr, tolerance, work, candidate);
+      if (work.refined.size() >= kMinPaintPoints) refit_on_ground(work.refined, *camera, radius_m, tolerance, work, candidate);
+    } else if (count > 0) {
+      refine_on_paint(bgr, tolerance, work, candidate);
     }
-    if (&c->on != &work.on_ellipse) work.on_ellipse = c->on;
-    out.push_back(candidate.ellipse);
-    out.back().confidence = c->share;
-    return;
+    if (field && bare_turf_share(bgr, FieldPixel(*field, FieldBoundaryParams{}), tolerance, candidate) > kMaxBareTurf)
+      return false;
   }
+  if (&on != &work.on_ellipse) work.on_ellipse = on;
+  out.push_back(candidate.ellipse);
+  out.back().confidence = c.share;
+  return true;
+}
+
+}  // namespace
+
+void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, std::vector<MarkingEllipse>& out,
+                        const cv::Mat& bgr, const std::optional<Rgb>& field, const std::optional<GroundCamera>& camera,
+                        double radius_m) {
+  out.clear();
+  const cv::Size frame = bgr.empty() ? cv::Size() : bgr.size();
+  // The circle on the turf first when the camera is known; then the chains' ellipse and the
+  // pairs', the one covering more of the turn first: the first the frame confirms is the circle.
+  if (camera) {
+    Candidate turf{{}, 0, &work.ground_support};
+    turf.share = fit_on_ground(pieces, *camera, radius_m, work, turf.fit);
+    if (turf.share >= required_coverage(turf.fit, frame, kMinGroundCoverage) &&
+        accept(turf, pieces, bgr, field, &*camera, radius_m, work, out))
+      return;
+  }
+  // The chains' pieces stay in work.on_ellipse, the pairs' in work.support, until one is kept.
+  Candidate chained{{}, 0, &work.on_ellipse}, paired{{}, 0, &work.support};
+  chained.share = fit_from_chains(pieces, work, chained.fit, frame);
+  paired.share = fit_from_pairs(pieces, work, paired.fit, frame);
+  const bool pairs_first = paired.share > chained.share;
+  for (const Candidate* c : {pairs_first ? &paired : &chained, pairs_first ? &chained : &paired})
+    if (accept(*c, pieces, bgr, field, nullptr, radius_m, work, out)) return;
   std::fill(work.on_ellipse.begin(), work.on_ellipse.end(), std::uint8_t{0});
 }
 

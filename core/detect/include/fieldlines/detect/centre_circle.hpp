@@ -43,9 +43,10 @@
 // brighter): a circle's image lies on paint wherever the frame shows it, save behind a robot (no
 // field colour there), while an ellipse fitted to one arc and a stray piece runs over turf. The
 // chains' ellipse and the pairs' are tried in turn, the one covering more of the turn first.
+// With the camera known, the circle fitted on the turf (ground_circle.hpp) is tried before them,
+// and they are not fitted when the frame confirms it.
 //
-// The fit is written out (a 5x5 solve on the stack) rather than cv::fitEllipse, which allocates
-// per call: warm detect allocates nothing with this stage on.
+// The fits are our own (conic_fit.hpp): warm detect allocates nothing with this stage on.
 #include <array>
 #include <cstdint>
 #include <optional>
