@@ -197,9 +197,7 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
     ElsedEngine::AnchorCells& near = impl_->near_paint;
     near.reset(bgr.cols, bgr.rows);
     for (const Segment& s : segments)
-      if (MarkingColours::may_be_marking(&colours, s))
-        near.allow(std::min(s.x0, s.x1) - kNearPaint, std::min(s.y0, s.y1) - kNearPaint,
-                   std::max(s.x0, s.x1) + kNearPaint, std::max(s.y0, s.y1) + kNearPaint);
+      if (MarkingColours::may_be_marking(&colours, s)) near.allow(s.x0, s.y0, s.x1, s.y1, kNearPaint);
     impl_->engine.redraw(bgr, params_, kPieceScanInterval, params_.piece_length, {rows, bright, grey, &near},
                          {&MarkingColours::may_be_marking, &colours}, pieces);
   } else {

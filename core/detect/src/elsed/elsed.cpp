@@ -40,15 +40,15 @@ void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& pa
   workers_.run(bands, band);
 }
 
-void ElsedEngine::AnchorCells::allow(float x0, float y0, float x1, float y1) {
+void ElsedEngine::AnchorCells::allow(float x0, float y0, float x1, float y1, float margin) {
   // Off the frame clamps to an edge cell, NaN to the first: never outside the mask.
   const auto cell_of = [&](float v, int count) {
     const float px = v >= 0 ? std::min(v, 1e6f) : 0.f;
     return std::min(static_cast<int>(px) / cell, count - 1);
   };
   if (columns <= 0 || rows <= 0) return;
-  const int c0 = cell_of(std::min(x0, x1), columns), c1 = cell_of(std::max(x0, x1), columns);
-  const int r0 = cell_of(std::min(y0, y1), rows), r1 = cell_of(std::max(y0, y1), rows);
+  const int c0 = cell_of(std::min(x0, x1) - margin, columns), c1 = cell_of(std::max(x0, x1) + margin, columns);
+  const int r0 = cell_of(std::min(y0, y1) - margin, rows), r1 = cell_of(std::max(y0, y1) + margin, rows);
   for (int r = r0; r <= r1; ++r)
     std::fill_n(allowed.begin() + static_cast<std::ptrdiff_t>(r) * columns + c0, c1 - c0 + 1, std::uint8_t{1});
 }

@@ -26,10 +26,6 @@ class ElsedEngine {
   // The first stage alone (what run() starts with): fills gradients().
   void compute_gradients(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold);
   const elsed::GradientMaps& gradients() const { return maps_; }
-  // After run() on the same frame: draws it again from anchors every `scan_interval` px, keeping
-  // segments from `min_line_length` px (the short pieces of curves), into `out` (cleared first).
-  // `limits` keeps anchors from where no piece is wanted (edges drawn from the others may still
-  // run there).
   // Where anchors may lie, in square cells of `cell` px (a coarse mask: cheap to clear and fill).
   struct AnchorCells {
     int cell = 8, columns = 0, rows = 0;
@@ -38,12 +34,17 @@ class ElsedEngine {
       columns = (width + cell - 1) / cell, rows = (height + cell - 1) / cell;
       allowed.assign(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows), 0);
     }
-    // Allows every cell that the box [x0, x1] x [y0, y1] (px, clamped to the frame) touches.
-    void allow(float x0, float y0, float x1, float y1);
+    // Allows every cell that the box with corners (x0, y0) and (x1, y1), in either order and
+    // widened by `margin` on every side (px, clamped to the frame), touches.
+    void allow(float x0, float y0, float x1, float y1, float margin);
     bool allows(int x, int y) const {
       return allowed[static_cast<std::size_t>(y / cell) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(x / cell)];
     }
   };
+  // After run() on the same frame: draws it again from anchors every `scan_interval` px, keeping
+  // segments from `min_line_length` px (the short pieces of curves), into `out` (cleared first).
+  // `limits` keeps anchors from where no piece is wanted (edges drawn from the others may still
+  // run there).
   struct AnchorLimits {
     std::span<const int> first_rows;  // one per column: anchors from that row down; empty: all
     int min_bright_sum = 0;           // a pixel this bright (B + G + R) within 5 px across...

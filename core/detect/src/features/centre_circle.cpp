@@ -9,8 +9,6 @@
 #include "field_pixel.hpp"
 #include "ground_circle.hpp"
 
-#include <opencv2/core.hpp>  // Matx::solve is defined in operations.hpp
-
 namespace fieldlines {
 namespace {
 

@@ -130,8 +130,7 @@ Params refine(const GroundCamera& camera, double radius, const std::vector<Circl
     cv::Matx<double, 5, 1> step;
     if (!cv::solve(jtj, jtr, step, cv::DECOMP_CHOLESKY)) break;
     for (int k = 0; k < 5; ++k) p[k] -= step(k);
-    if (!(std::abs(step(0)) + std::abs(step(1)) + std::abs(step(2)) < 1e-6 * radius)) continue;
-    break;
+    if (std::abs(step(0)) + std::abs(step(1)) + std::abs(step(2)) < 1e-6 * radius) break;
   }
   return p;
 }

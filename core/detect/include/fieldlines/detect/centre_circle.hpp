@@ -55,6 +55,7 @@
 #include <span>
 #include <vector>
 
+#include "fieldlines/detect/detector_params.hpp"
 #include "fieldlines/detect/field_features.hpp"
 #include "fieldlines/detect/ground_camera.hpp"
 
@@ -96,6 +97,7 @@ struct CircleWorkspace {
 // `radius_m` metres (ground_camera.hpp); none: image fits alone.
 void find_centre_circle(std::span<const Marking> pieces, CircleWorkspace& work, std::vector<MarkingEllipse>& out,
                         const cv::Mat& bgr = {}, const std::optional<Rgb>& field = std::nullopt,
-                        const std::optional<GroundCamera>& camera = std::nullopt, double radius_m = 0.75);
+                        const std::optional<GroundCamera>& camera = std::nullopt,
+                        double radius_m = DetectorParams{}.centre_circle_radius);
 
 }  // namespace fieldlines

@@ -36,7 +36,6 @@ class GroundProjection {
   std::optional<cv::Point2d> to_ground(double u, double v) const;
   // The pixel a turf point is seen at; none behind the camera (or within a millimetre of its plane).
   std::optional<cv::Point2d> to_image(cv::Point2d ground) const;
-  const GroundCamera& camera() const { return camera_; }
 
  private:
   GroundCamera camera_;
