@@ -14,6 +14,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cli_test_support.hpp"
+#include "painted_field.hpp"
 #include "fieldlines/detect/camera_file.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/data/reference_csv.hpp"
@@ -204,15 +205,8 @@ TEST_F(CliDetect, FeaturesWriteIntersectionsAndEllipses) {
 TEST_F(CliDetect, CameraFileFitsTheCircleOnTheTurfAsTheLibrary) {
   const fieldlines::GroundCamera camera{.fx = 640, .fy = 640, .cx = 319.5, .cy = 239.5,
                                         .pitch_rad = 30 * std::numbers::pi / 180, .roll_rad = 0, .height_m = 0.6};
-  cv::Mat img(480, 640, CV_8UC3, cv::Scalar(50, 140, 40));
-  const fieldlines::GroundProjection projection(camera);
-  std::vector<cv::Point> outline;  // a circle of 0.75 m, 0.8 m ahead: the frame shows its far arc
-  for (int k = 0; k < 720; ++k) {
-    const double a = 2 * std::numbers::pi * k / 720;
-    if (const auto p = projection.to_image({0.8 + 0.75 * std::cos(a), 0.75 * std::sin(a)}))
-      if (std::abs(p->x) < 5000 && std::abs(p->y) < 5000) outline.emplace_back(cvRound(p->x), cvRound(p->y));
-  }
-  cv::polylines(img, outline, true, cv::Scalar(255, 255, 255), 7, cv::LINE_AA);
+  // A circle of 0.75 m, 0.8 m ahead: the frame shows its far arc.
+  cv::Mat img = fieldlines::test::painted_ground_circle(camera, {0.8, 0}, 0.75, 7);
   cv::Mat noise(img.size(), CV_8UC3);
   cv::randu(noise, 0, 8);
   img += noise;

@@ -78,21 +78,6 @@ TEST(GroundCamera, BadCamerasAreRefused) {
   EXPECT_TRUE(detector.camera());
 }
 
-// The circle of `radius` m centred at `centre` on the turf, painted through `c`: its outline as
-// the camera sees it (points behind the camera left out), `width` px wide.
-cv::Mat painted_circle(const GroundCamera& c, cv::Point2d centre, double radius, int width) {
-  cv::Mat clean(480, 640, CV_8UC3, kTurf);
-  const GroundProjection projection(c);
-  std::vector<cv::Point> outline;
-  for (int k = 0; k < 720; ++k) {
-    const double a = 2 * std::numbers::pi * k / 720;
-    if (const auto p = projection.to_image({centre.x + radius * std::cos(a), centre.y + radius * std::sin(a)}))
-      if (std::abs(p->x) < 5000 && std::abs(p->y) < 5000) outline.emplace_back(cvRound(p->x * 16), cvRound(p->y * 16));
-  }
-  cv::polylines(clean, outline, true, kPaint, width, cv::LINE_AA, 4);
-  return noisy(clean);
-}
-
 // The true image ellipse of the circle: its projected points, fitted.
 cv::RotatedRect true_ellipse(const GroundCamera& c, cv::Point2d centre, double radius) {
   const GroundProjection projection(c);
@@ -141,7 +126,7 @@ std::pair<double, int> arc_distance(const MarkingEllipse& e, const cv::RotatedRe
 TEST(GroundCircle, TheArcOfACircleCloseByIsFoundOnTheTurf) {
   const GroundCamera c = camera(30, 2);
   const cv::Point2d centre(0.8, 0.05);
-  const cv::Mat frame = painted_circle(c, centre, 0.75, 7);
+  const cv::Mat frame = noisy(test::painted_ground_circle(c, centre, 0.75, 7));
   const cv::RotatedRect truth = true_ellipse(c, centre, 0.75);
   ASSERT_GT(truth.center.y, 600.f) << "the test's premise: the ellipse's centre is far below the frame";
   const double radius = 0.5 * std::sqrt(double(truth.size.width) * truth.size.height);
