@@ -46,6 +46,11 @@ bool to_ellipse(Fit& fit) {
 }
 
 bool fit_conic(const std::vector<ConicSample>& points, Fit& fit, bool aligned, float roll) {
+  return solve_conic(points, fit, aligned, roll) && to_ellipse(fit);
+}
+
+bool solve_conic(const std::vector<ConicSample>& points, Fit& fit, bool aligned, float roll) {
+  fit = Fit{};
   double mx = 0, my = 0;
   int n = 0;
   for (const ConicSample& p : points)
@@ -57,7 +62,6 @@ bool fit_conic(const std::vector<ConicSample>& points, Fit& fit, bool aligned, f
     if (p.inlier) spread += (p.x - mx) * (p.x - mx) + (p.y - my) * (p.y - my);
   const double s = std::sqrt(spread / n / 2);
   if (!(s > 1e-3)) return false;
-  fit = Fit{};
   fit.mx = mx, fit.my = my, fit.s = s;
   if (aligned) {
     const double co = std::cos(roll), si = std::sin(roll);
@@ -77,7 +81,7 @@ bool fit_conic(const std::vector<ConicSample>& points, Fit& fit, bool aligned, f
     const double ca = x(0), cc = 1 - x(0);
     fit.a = ca * co * co + cc * si * si, fit.b = 2 * co * si * (ca - cc), fit.c = ca * si * si + cc * co * co;
     fit.d = x(1) * co - x(2) * si, fit.e = x(1) * si + x(2) * co, fit.f = x(3);
-    return to_ellipse(fit);
+    return true;
   }
   cv::Matx<double, 5, 5> m = cv::Matx<double, 5, 5>::zeros();
   cv::Matx<double, 5, 1> rhs = cv::Matx<double, 5, 1>::zeros();
@@ -91,7 +95,7 @@ bool fit_conic(const std::vector<ConicSample>& points, Fit& fit, bool aligned, f
   if (std::abs(cv::determinant(m)) < 1e-12) return false;
   const cv::Matx<double, 5, 1> x = m.solve(rhs, cv::DECOMP_LU);
   fit.a = x(0), fit.b = x(1), fit.c = 1 - x(0), fit.d = x(2), fit.e = x(3), fit.f = x(4);
-  return to_ellipse(fit);
+  return true;
 }
 
 }  // namespace fieldlines

@@ -41,6 +41,9 @@ bool to_ellipse(Fit& fit);
 // leaves out the uv term (axes along the image's turned by `roll` radians): four unknowns,
 // which two short pieces determine where the full conic's five need three.
 bool fit_conic(const std::vector<ConicSample>& points, Fit& fit, bool aligned = false, float roll = 0);
+// The conic's coefficients alone, whatever its kind (false: too few points, or degenerate); a
+// hyperbola still ranks points by their distance from it.
+bool solve_conic(const std::vector<ConicSample>& points, Fit& fit, bool aligned = false, float roll = 0);
 
 }  // namespace fieldlines
 
