@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include "conic_fit.hpp"
 #include "field_pixel.hpp"
@@ -318,37 +319,39 @@ void read_paint(const cv::Mat& bgr, float tolerance, const TurnBins& seen, Circl
     if (std::abs(offset) <= reach) refined.push_back({a.x + offset * a.nx, a.y + offset * a.ny, 1});
   }
 }
-void read_paint(const cv::Mat& bgr, float tolerance, CircleWorkspace& work, const Fit& fit) {
-  read_paint(bgr, tolerance, bins_of(work.points, fit), work, fit);
-}
 constexpr std::size_t kMinPaintPoints = 12;
 // The refit on the paint follows it round the ellipse: each round also reads one bin beyond
 // either end of the turn already read, and keeps the paint found there close to the ellipse.
 constexpr int kFollowRounds = 6;
 
-// The ellipse refitted to the paint read across it (read_paint()). A piece is a chord or a
-// tangent of the curve, so the first fit lies off the paint near a flat ellipse's sharp ends;
-// the paint does not. And the pieces' ellipse is least sure where they end: the paint, followed
-// a bin at a time past their ends, pins down the part of the ellipse they do not show. Keeps
-// `fit` unless the refit is an ellipse and most of its points lie on it.
-void refine_on_paint(const cv::Mat& bgr, float tolerance, CircleWorkspace& work, Fit& fit) {
+// The ellipse refitted to the paint read across it (read_paint()) by `refit` (paint, fit: true
+// when it replaced `fit`). A piece is a chord or a tangent of the curve, so the first fit lies
+// off the paint near a flat ellipse's sharp ends; the paint does not. And the pieces' ellipse
+// is least sure where they end: the paint, followed a bin at a time past their ends, pins down
+// the part of the ellipse they do not show.
+template <typename Refit>
+void follow_paint(const cv::Mat& bgr, float tolerance, CircleWorkspace& work, Fit& fit, Refit refit) {
   TurnBins seen = bins_of(work.points, fit);
   for (int round = 0; round <= kFollowRounds; ++round) {
     read_paint(bgr, tolerance, seen, work, fit, round == 0 ? std::numeric_limits<float>::infinity() : tolerance + 1);
-    const std::vector<Point>& refined = work.refined;
-    Fit candidate;
-    if (refined.size() < kMinPaintPoints || !fit_conic(refined, candidate)) return;
-    int close = 0;
-    for (const Point& p : refined) close += distance(candidate, p.x, p.y) <= tolerance;
-    if (2 * close < static_cast<int>(refined.size())) return;
-    fit = candidate;
+    if (work.refined.size() < kMinPaintPoints || !refit(std::as_const(work.refined), fit)) return;
     // The bins the paint was found in, under the refit, and one beyond each.
-    const TurnBins found = bins_of(refined, fit);
+    const TurnBins found = bins_of(work.refined, fit);
     for (int b = 0; b < kCoverageBins; ++b)
       seen[static_cast<std::size_t>(b)] = found[static_cast<std::size_t>(b)] ||
                                           found[static_cast<std::size_t>((b + 1) % kCoverageBins)] ||
                                           found[static_cast<std::size_t>((b + kCoverageBins - 1) % kCoverageBins)];
   }
+}
+
+// The image conic refit: an ellipse most of the paint's points lie on replaces `fit`.
+bool refit_in_image(const std::vector<Point>& paint, float tolerance, Fit& fit) {
+  Fit candidate;
+  if (!fit_conic(paint, candidate)) return false;
+  const auto close = std::count_if(paint.begin(), paint.end(), [&](const Point& p) { return distance(candidate, p.x, p.y) <= tolerance; });
+  if (2 * close < static_cast<std::ptrdiff_t>(paint.size())) return false;
+  fit = candidate;
+  return true;
 }
 
 // The share of the ellipse's points inside the frame (72 round it) where the frame shows bare
@@ -485,10 +488,12 @@ bool accept(const Candidate& c, std::span<const Marking> pieces, const cv::Mat& 
     const float tolerance = std::max(2.5f, width / static_cast<float>(std::max(count, 1)) / 2);
     if (count > 0 && camera) {
       // The paint's points refine the circle and the pose on the turf.
-      read_paint(bgr, tolerance, work, candidate);
-      if (work.refined.size() >= kMinPaintPoints) refit_on_ground(work.refined, *camera, radius_m, tolerance, work, candidate);
+      follow_paint(bgr, tolerance, work, candidate, [&](const std::vector<Point>& paint, Fit& fit) {
+        return refit_on_ground(paint, *camera, radius_m, tolerance, work, fit);
+      });
     } else if (count > 0) {
-      refine_on_paint(bgr, tolerance, work, candidate);
+      follow_paint(bgr, tolerance, work, candidate,
+                   [&](const std::vector<Point>& paint, Fit& fit) { return refit_in_image(paint, tolerance, fit); });
     }
     if (field && bare_turf_share(bgr, FieldPixel(*field, FieldBoundaryParams{}), tolerance, candidate) > kMaxBareTurf)
       return false;

@@ -207,7 +207,7 @@ float fit_on_ground(std::span<const Marking> pieces, const GroundCamera& camera,
   return image_ellipse(camera, p, work, fit) ? found.share : 0;
 }
 
-void refit_on_ground(std::span<const CircleWorkspace::Point> paint, const GroundCamera& camera, double radius,
+bool refit_on_ground(std::span<const CircleWorkspace::Point> paint, const GroundCamera& camera, double radius,
                      float tolerance, CircleWorkspace& work, Fit& fit) {
   const auto& g = work.ground_fit;
   Params p(g[0], g[1], g[2], g[3], g[4]);
@@ -216,12 +216,13 @@ void refit_on_ground(std::span<const CircleWorkspace::Point> paint, const Ground
   for (const CircleWorkspace::Point& q : paint) add_sample(at, q.x, q.y, work.ground_samples);
   p = refine(camera, radius, work.ground_samples, p);
   Fit candidate;
-  if (!(p[2] > 0) || !std::isfinite(p[0] + p[1] + p[2] + p[3] + p[4]) || !image_ellipse(camera, p, work, candidate)) return;
+  if (!(p[2] > 0) || !std::isfinite(p[0] + p[1] + p[2] + p[3] + p[4]) || !image_ellipse(camera, p, work, candidate)) return false;
   const auto close = std::count_if(paint.begin(), paint.end(),
                                    [&](const CircleWorkspace::Point& q) { return distance(candidate, q.x, q.y) <= tolerance; });
-  if (2 * close < static_cast<std::ptrdiff_t>(paint.size())) return;
+  if (2 * close < static_cast<std::ptrdiff_t>(paint.size())) return false;
   for (int k = 0; k < 5; ++k) work.ground_fit[static_cast<std::size_t>(k)] = p[k];
   fit = candidate;
+  return true;
 }
 
 }  // namespace fieldlines

@@ -34,8 +34,8 @@ float fit_on_ground(std::span<const Marking> pieces, const GroundCamera& camera,
 
 // After fit_on_ground() on the same camera: the circle and the pose refined again on `paint`
 // (image points on the paint's centre line round the ellipse found), which replaces `fit`
-// when most of them lie within `tolerance` px of the new ellipse.
-void refit_on_ground(std::span<const CircleWorkspace::Point> paint, const GroundCamera& camera, double radius,
+// when most of them lie within `tolerance` px of the new ellipse (true then).
+bool refit_on_ground(std::span<const CircleWorkspace::Point> paint, const GroundCamera& camera, double radius,
                      float tolerance, CircleWorkspace& work, Fit& fit);
 
 }  // namespace fieldlines
