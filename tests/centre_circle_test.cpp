@@ -178,6 +178,41 @@ TEST(CentreCircle, TheFitIsRefinedOnThePaint) {
   EXPECT_EQ(on_paint[0].confidence, from_pieces[0].confidence) << "the turn covered is the pieces'";
 }
 
+// Pieces on one arc of a circle seen close by fix the rest of it poorly: each is fitted to an
+// edge a pixel or so off the paint's centre, and the conic extrapolates. The paint, followed
+// round the ellipse past the pieces' ends, fixes it.
+TEST(CentreCircle, TheFitFollowsThePaintPastThePiecesEnds) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  const cv::Point2f centre(320, 420);
+  const float a = 300, b = 200;  // semi-axes, the image's axes: the frame's bottom cuts it
+  cv::ellipse(clean, cv::RotatedRect(centre, cv::Size2f(2 * a, 2 * b), 0), kPaint, 6, cv::LINE_AA);
+  const cv::Mat frame = noisy(clean);
+  // Chords of 16 degrees of turn over 135 degrees of the far arc, each 1.5 px to either side of
+  // the paint's centre in turn.
+  std::vector<Marking> pieces;
+  float side = 1.5f;
+  for (float deg = 207; deg < 332; deg += 17, side = -side) {
+    const auto at = [&](float d) {
+      const float t = d * std::numbers::pi_v<float> / 180;
+      const cv::Point2f normal(b * std::cos(t), a * std::sin(t));
+      return cv::Point2f(centre.x + a * std::cos(t), centre.y + b * std::sin(t)) + side * normal / cv::norm(normal);
+    };
+    const cv::Point2f p = at(deg), q = at(deg + 16);
+    pieces.push_back({p.x, p.y, q.x, q.y, 6});
+  }
+  CircleWorkspace work;
+  std::vector<MarkingEllipse> from_pieces, on_paint;
+  find_centre_circle(pieces, work, from_pieces, cv::Mat(480, 640, CV_8UC1));  // the frame's size, no pixels to read
+  find_centre_circle(pieces, work, on_paint, frame);
+  ASSERT_EQ(from_pieces.size(), 1u);
+  ASSERT_EQ(on_paint.size(), 1u);
+  const auto centre_error = [&](const MarkingEllipse& e) { return std::hypot(e.cx - centre.x, e.cy - centre.y); };
+  EXPECT_GT(centre_error(from_pieces[0]), 4.f) << "the pieces alone";
+  EXPECT_LE(centre_error(on_paint[0]), 1.5f) << on_paint[0].cx << ", " << on_paint[0].cy;
+  EXPECT_NEAR(std::max(on_paint[0].width, on_paint[0].height), 2 * a, 0.01f * 2 * a);
+  EXPECT_NEAR(std::min(on_paint[0].width, on_paint[0].height), 2 * b, 0.01f * 2 * b);
+}
+
 // An ellipse the pieces make must lie on paint wherever the frame shows it: the same pieces over
 // a frame with only the lower half of their ellipse painted (the upper half bare turf) give
 // none; with all of it painted, the ellipse.

@@ -12,7 +12,7 @@
 // Gauss-Newton, each pose angle held near the given one (2 degrees) and the radius near the
 // rules' (a tenth), on the pieces' ends (on the curve; a chord's middle lies inside it) weighed
 // in px; then the pieces within an eighth of the radius are its support, and it is refined
-// again on them, and once more on the paint read across its image (centre_circle.cpp). Its image
+// again on them, and on the paint read across its image and followed round it (centre_circle.cpp). Its image
 // ellipse is the circle's 36 points through the refined pose, fitted as a conic (conic_fit.hpp):
 // exact, as the whole turn is known. A circle that passes behind the camera has no image ellipse.
 // A pose off by a degree moves the centre of an ellipse far below the frame by a sixth of its
