@@ -50,6 +50,12 @@ constexpr float kMaxBareTurf = 0.05f;
 
 float length(const Marking& m) { return std::hypot(m.x1 - m.x0, m.y1 - m.y0); }
 
+// How far off an ellipse its pieces may lie: half their mean line width, at least 2.5 px (a
+// piece is a chord: its middle lies inside the curve). `width_sum` over `count` pieces.
+float tolerance_of_widths(float width_sum, int count) {
+  return std::max(2.5f, width_sum / static_cast<float>(std::max(count, 1)) / 2);
+}
+
 // The bin of the turn (kCoverageBins round the ellipse, seen from its centre in its own axes)
 // that `p` lies in; co, si: the cosine and sine of fit.theta (the callers' loops compute them once).
 int turn_bin(const Fit& fit, float co, float si, const Point& p) {
@@ -202,10 +208,8 @@ float fit_from_pairs(std::span<const Marking> pieces, CircleWorkspace& work, Fit
   float best_share = 0;
   int best_count = 0, best_i = -1, best_j = -1;
   float best_roll = 0;
-  // Half the pair's mean line width, at least 2.5 px (a piece is a chord: its middle lies inside
-  // the curve).
   const auto tolerance_of = [&](int i, int j) {
-    return std::max(2.5f, (pieces[static_cast<std::size_t>(i)].width + pieces[static_cast<std::size_t>(j)].width) / 4);
+    return tolerance_of_widths(pieces[static_cast<std::size_t>(i)].width + pieces[static_cast<std::size_t>(j)].width, 2);
   };
   for (std::size_t i = 0; i < m; ++i) {
     for (std::size_t j = i + 1; j < m; ++j) {
@@ -401,14 +405,12 @@ float fit_from_chains(std::span<const Marking> pieces, CircleWorkspace& work, Fi
   }
   for (std::size_t i = 0; i < n; ++i) ++work.chain_size[static_cast<std::size_t>(root(work.parent, static_cast<int>(i)))];
 
-  // The tolerance of a chain: half its mean line width, at least 2.5 px (a piece is a chord: its
-  // middle lies inside the curve).
   const auto tolerance_of = [&](int chain) {
     float sum = 0;
     int count = 0;
     for (std::size_t i = 0; i < n; ++i)
       if (root(work.parent, static_cast<int>(i)) == chain) sum += pieces[i].width, ++count;
-    return std::max(2.5f, sum / static_cast<float>(std::max(count, 1)) / 2);
+    return tolerance_of_widths(sum, count);
   };
   // The seed: one chain of at least kMinChain pieces, or two chains of at least two each (a flat
   // ellipse's far and near arcs, which do not chain round its sharply bending ends).
@@ -479,13 +481,13 @@ bool accept(const Candidate& c, std::span<const Marking> pieces, const cv::Mat& 
   Fit candidate = c.fit;
   const std::vector<std::uint8_t>& on = *c.on;
   if (!bgr.empty() && bgr.type() == CV_8UC3) {
-    // The turn the ellipse's pieces cover, and their tolerance (half their mean width).
+    // The turn the ellipse's pieces cover, and their tolerance.
     work.points.clear();
     float width = 0;
     int count = 0;
     for (std::size_t i = 0; i < pieces.size(); ++i)
       if (on[i]) add_samples(pieces[i], work.points), width += pieces[i].width, ++count;
-    const float tolerance = std::max(2.5f, width / static_cast<float>(std::max(count, 1)) / 2);
+    const float tolerance = tolerance_of_widths(width, count);
     if (count > 0 && camera) {
       // The paint's points refine the circle and the pose on the turf.
       follow_paint(bgr, tolerance, work, candidate, [&](const std::vector<Point>& paint, Fit& fit) {
