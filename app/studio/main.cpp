@@ -18,6 +18,7 @@
 
 #include "gui/model/bench_scene.hpp"
 #include "fieldlines/detect/atomic_file.hpp"
+#include "fieldlines/detect/camera_file.hpp"
 #include "fieldlines/synth/demo.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "gui/model/frame_stats.hpp"
@@ -176,8 +177,10 @@ int run(const studio::StudioArgs& args) {
   const auto recent_file = studio::default_recent_file();
   std::vector<std::string> recent = bench ? std::vector<std::string>{} : studio::load_recent(recent_file);
   Startup start = resolve_startup(args, recent);
-  Window window(args.window_width, args.window_height, !bench);
   studio::ControllerOptions options;
+  // A bad camera file stops the studio before its window opens (main() prints why).
+  if (!args.camera_file.empty()) options.camera = load_camera_file(args.camera_file);
+  Window window(args.window_width, args.window_height, !bench);
   options.autosave = start.autosave;
   options.auto_train = args.auto_train;
   options.background_save = true;

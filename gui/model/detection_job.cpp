@@ -28,13 +28,15 @@ std::vector<StripeVerdict> verdicts(StripeCheck& check, const cv::Mat& image, co
 
 }  // namespace
 
-void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, const Thresholds& thresholds) {
+void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, const Thresholds& thresholds,
+                         const std::optional<GroundCamera>& camera) {
   total_ = items.size();
   done_ = 0;
-  job_.start([items = std::move(items), params, thresholds](std::stop_token stop, const auto& report) {
+  job_.start([items = std::move(items), params, thresholds, camera](std::stop_token stop, const auto& report) {
     const DetectorParams every = with_every_feature(params);
-    LineDetector detector(every, thresholds);  // throws on bad parameters: the job's error
+    LineDetector detector(every, thresholds);  // throws on bad parameters (or camera): the job's error
     detector.set_find_field_boundary(true);
+    detector.set_camera(camera);
     StripeCheck stripes;
     std::size_t processed = 0;
     for (const Item& item : items) {

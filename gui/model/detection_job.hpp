@@ -39,8 +39,10 @@ class DetectionJob {
     std::filesystem::path path;
   };
   // Starts on a worker thread; a running job is cancelled and joined first. The detector runs
-  // with_every_feature(params) and finds the field boundary too.
-  void start(std::vector<Item> items, const DetectorParams& params, const Thresholds& thresholds);
+  // with_every_feature(params) and finds the field boundary too; with `camera`, it also fits
+  // the centre circle on the turf (LineDetector::set_camera).
+  void start(std::vector<Item> items, const DetectorParams& params, const Thresholds& thresholds,
+             const std::optional<GroundCamera>& camera = std::nullopt);
   void cancel() { job_.cancel(); }
   bool running() const { return job_.running(); }
   // Results finished since the last poll (UI thread, once per frame).

@@ -19,7 +19,8 @@ std::string DetectionReport::summary() const {
 
 bool needs_detection(const ImageEntry& image) { return image.segments.empty() && image.detect_ms == 0; }
 
-void ProjectDetection::start(const Project& project, const std::filesystem::path& project_file, bool only_undetected) {
+void ProjectDetection::start(const Project& project, const std::filesystem::path& project_file, bool only_undetected,
+                             const std::optional<GroundCamera>& camera) {
   report_ = {};
   std::vector<DetectionJob::Item> items;
   for (std::size_t i = 0; i < project.images.size(); ++i) {
@@ -27,7 +28,7 @@ void ProjectDetection::start(const Project& project, const std::filesystem::path
       items.push_back({i, Project::resolve(project_file, project.images[i].path)});
     }
   }
-  job_.start(std::move(items), project.detector, project.thresholds);
+  job_.start(std::move(items), project.detector, project.thresholds, camera);
 }
 
 const std::vector<std::size_t>& ProjectDetection::poll(Project& project) {

@@ -5,6 +5,7 @@
 // detected image's field features are kept here (the project file has no place for them).
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,7 +34,9 @@ class ProjectDetection {
  public:
   // Detects the project's images (only those never detected, or all) with its detector
   // parameters and thresholds; a running detection is replaced.
-  void start(const Project& project, const std::filesystem::path& project_file, bool only_undetected);
+  // `camera`: the robot's, when known (the centre circle is also fitted on the turf).
+  void start(const Project& project, const std::filesystem::path& project_file, bool only_undetected,
+             const std::optional<GroundCamera>& camera = std::nullopt);
   // Once per frame: takes the finished images into `project` (segments replaced, human labels
   // moved to the matching new segments, detection time) and returns their indices.
   const std::vector<std::size_t>& poll(Project& project);

@@ -20,7 +20,7 @@ int parse_int(const std::string& text, const std::string& option, int lo, int hi
 
 const char* studio_usage() {
   return "usage: fieldlines-studio [PROJECT.json | IMAGE_FOLDER | VIDEO | --last] [--every N] [--window-size WxH]\n"
-         "                         [--no-auto-train] [--bench-frames N [--bench-no-features]] [--version]\n"
+         "                         [--camera FILE] [--no-auto-train] [--bench-frames N [--bench-no-features]] [--version]\n"
          "  PROJECT.json     a studio project (labels are autosaved into it)\n"
          "  IMAGE_FOLDER     images to label; creates IMAGE_FOLDER/fieldlines-project.json\n"
          "  VIDEO            mp4/avi/mkv/mov/webm: every N-th frame (--every, default 10) goes to\n"
@@ -28,6 +28,8 @@ const char* studio_usage() {
          "  (nothing)        the built-in demo: synthetic field pictures, some labelled, made on first use\n"
          "  --last           reopen the most recent project (also listed in the Images tab)\n"
          "  --window-size    initial window size, default 1280x800\n"
+         "  --camera FILE    the robot's camera (intrinsics, pitch, roll, height; as `fieldlines detect\n"
+         "                   --camera`): the field features fit the centre circle on the turf too\n"
          "  --no-auto-train  start with live retraining off (it retrains both classes after every\n"
          "                   label change; the Train tab's checkbox toggles it)\n"
          "  --bench-frames N render N frames as fast as possible, print the median frame time, exit\n"
@@ -73,6 +75,8 @@ StudioArgs parse_studio_args(const std::vector<std::string>& args) {
       out.video_every = parse_int(value(), a, 1, 100000);
     } else if (a == "--state-file") {
       out.state_file = value();
+    } else if (a == "--camera") {
+      out.camera_file = value();
     } else if (!a.empty() && a[0] == '-') {
       throw Error("unknown option " + a);
     } else if (out.input.empty()) {

@@ -15,6 +15,7 @@ struct StudioArgs {
   int video_every = 10;       // a video opens as every n-th frame
   bool auto_train = true;     // retrain after every label change (--no-auto-train: off)
   std::string state_file;     // automation: write the UI state (view, hover, saves) here as JSON
+  std::string camera_file;    // a fixed camera over the field (camera_file.hpp): the circle is also fitted on the turf
   bool help = false;
   bool version = false;
 };

@@ -338,7 +338,9 @@ std::string StudioController::finish_saves() {
 
 // ---------------------------------------------------------------- background jobs
 
-void StudioController::detect_all(bool only_undetected) { detection_.start(project_, project_file_, only_undetected); }
+void StudioController::detect_all(bool only_undetected) {
+  detection_.start(project_, project_file_, only_undetected, options_.camera);
+}
 
 std::vector<Segment> StudioController::all_segments() const {
   std::vector<Segment> all;

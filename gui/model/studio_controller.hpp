@@ -34,6 +34,8 @@ struct ControllerOptions {
   // Autosave writes on a background thread (gui/model/project_saver.hpp); the studio turns it
   // on, tests that read the file right after an edit leave it off.
   bool background_save = false;
+  // The robot's camera, when known: detections fit the centre circle on the turf too.
+  std::optional<GroundCamera> camera;
 };
 
 struct ImageProgress {

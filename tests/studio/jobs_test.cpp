@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 #include <thread>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "fieldlines/data/project.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fixtures.hpp"
+#include "painted_field.hpp"
 #include "gui/model/figures.hpp"
 #include "gui/model/job.hpp"
 #include "gui/model/message_queue.hpp"
@@ -336,6 +338,33 @@ TEST(DetectionJob, DetectsAFolderProjectInTheBackgroundAndKeepsLabels) {
   EXPECT_EQ(c.detection_report().labels_kept, 1u);
   EXPECT_EQ(c.detection_report().labels_lost, 0u);
   EXPECT_EQ(c.detection_report().summary(), "detected 3 images; 1 labels kept");
+}
+
+// The robot's camera (the studio's --camera) reaches the detections: an arc of a circle close
+// by, which only the fit on the turf finds (ground_circle_test), is the image's ellipse with it
+// and none without.
+TEST(DetectionJob, TheRobotsCameraFitsTheCircleOnTheTurf) {
+  studio_test::TempDir dir("detect-camera");
+  const double kDeg = std::numbers::pi / 180;
+  const fieldlines::GroundCamera camera{.fx = 640, .fy = 640, .cx = 319.5, .cy = 239.5, .pitch_rad = 30 * kDeg,
+                                        .roll_rad = 2 * kDeg, .height_m = 0.6};
+  cv::imwrite((dir.path() / "arc.png").string(),
+              fieldlines::test::noisy(fieldlines::test::painted_ground_circle(camera, {0.8, 0.05}, 0.75, 7)));
+  fieldlines::Project p;
+  p.images.push_back({"arc.png", {}, 0});
+  const auto file = dir.path() / "p.json";
+  p.save(file);
+  for (const bool known : {false, true}) {
+    SCOPED_TRACE(known);
+    fs::ControllerOptions options;
+    if (known) options.camera = camera;
+    fs::StudioController c(fieldlines::Project::load(file), file, options);
+    c.detect_all(false);  // the first round's autosave has detected it already
+    c.detection().wait();
+    c.poll();
+    ASSERT_EQ(c.detection().done(), 1u);
+    EXPECT_EQ(c.field_features().ellipses.size(), known ? 1u : 0u);
+  }
 }
 
 TEST(DetectionJob, CorruptImageIsReportedByNameAndTheOthersAreDetected) {

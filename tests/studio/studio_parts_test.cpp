@@ -86,6 +86,9 @@ TEST(StudioArgs, ParsesAndRejects) {
   EXPECT_FALSE(fs::parse_studio_args({}).last);
   EXPECT_THROW(fs::parse_studio_args({"--last", "p.json"}), fieldlines::Error);
   EXPECT_TRUE(fs::parse_studio_args({"--version"}).version);
+  EXPECT_EQ(fs::parse_studio_args({"--camera", "head.json"}).camera_file, "head.json");
+  EXPECT_TRUE(fs::parse_studio_args({}).camera_file.empty());
+  EXPECT_THROW(fs::parse_studio_args({"--camera"}), fieldlines::Error);
 }
 
 TEST(RecentProjects, MostRecentFirstWithoutDuplicates) {

@@ -82,6 +82,16 @@ TEST_F(StudioBadInput, FolderWithoutImagesAndBadOptionsAreMessages) {
   r = run_studio({"--frobnicate"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("unknown option --frobnicate"), std::string::npos) << r.output;
+  // A camera file that is missing or has no height: named, before any window opens.
+  r = run_studio({"--camera", (dir() / "none.json").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("none.json"), std::string::npos) << r.output;
+  write_file_atomically(dir() / "camera.json",
+                        R"({"format": "fieldlines-camera", "version": 1, "fx": 640, "fy": 640, "cx": 319.5,)"
+                        R"( "cy": 239.5, "pitch_deg": 30, "roll_deg": 0})");
+  r = run_studio({"--camera", (dir() / "camera.json").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("height_m"), std::string::npos) << r.output;
 }
 
 TEST_F(StudioBadInput, CorruptVideoIsRefusedWithAMessage) {
