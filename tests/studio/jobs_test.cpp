@@ -22,7 +22,7 @@
 #include "fieldlines/data/project.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fixtures.hpp"
-#include "painted_field.hpp"
+#include "tests/painted_field.hpp"
 #include "gui/model/figures.hpp"
 #include "gui/model/job.hpp"
 #include "gui/model/message_queue.hpp"
