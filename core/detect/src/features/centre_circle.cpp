@@ -351,9 +351,7 @@ void follow_paint(const cv::Mat& bgr, float tolerance, CircleWorkspace& work, Fi
 // The image conic refit: an ellipse most of the paint's points lie on replaces `fit`.
 bool refit_in_image(const std::vector<Point>& paint, float tolerance, Fit& fit) {
   Fit candidate;
-  if (!fit_conic(paint, candidate)) return false;
-  const auto close = std::count_if(paint.begin(), paint.end(), [&](const Point& p) { return distance(candidate, p.x, p.y) <= tolerance; });
-  if (2 * close < static_cast<std::ptrdiff_t>(paint.size())) return false;
+  if (!fit_conic(paint, candidate) || !most_within(candidate, paint, tolerance)) return false;
   fit = candidate;
   return true;
 }
@@ -488,15 +486,12 @@ bool accept(const Candidate& c, std::span<const Marking> pieces, const cv::Mat& 
     for (std::size_t i = 0; i < pieces.size(); ++i)
       if (on[i]) add_samples(pieces[i], work.points), width += pieces[i].width, ++count;
     const float tolerance = tolerance_of_widths(width, count);
-    if (count > 0 && camera) {
-      // The paint's points refine the circle and the pose on the turf.
+    // The paint's points refine the circle and the pose on the turf when the camera is given.
+    if (count > 0)
       follow_paint(bgr, tolerance, work, candidate, [&](const std::vector<Point>& paint, Fit& fit) {
-        return refit_on_ground(paint, *camera, radius_m, tolerance, work, fit);
+        return camera ? refit_on_ground(paint, *camera, radius_m, tolerance, work, fit)
+                      : refit_in_image(paint, tolerance, fit);
       });
-    } else if (count > 0) {
-      follow_paint(bgr, tolerance, work, candidate,
-                   [&](const std::vector<Point>& paint, Fit& fit) { return refit_in_image(paint, tolerance, fit); });
-    }
     if (field && bare_turf_share(bgr, FieldPixel(*field, FieldBoundaryParams{}), tolerance, candidate) > kMaxBareTurf)
       return false;
   }

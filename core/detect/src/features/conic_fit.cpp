@@ -24,6 +24,12 @@ float distance(const Fit& fit, float x, float y) {
   return g2 > 0 ? static_cast<float>(std::abs(q) / std::sqrt(g2) * fit.s) : 1e9f;
 }
 
+bool most_within(const Fit& fit, std::span<const ConicSample> points, float tolerance) {
+  const auto close = std::count_if(points.begin(), points.end(),
+                                   [&](const ConicSample& p) { return distance(fit, p.x, p.y) <= tolerance; });
+  return 2 * close >= static_cast<std::ptrdiff_t>(points.size());
+}
+
 bool to_ellipse(Fit& fit) {
   if (fit.b * fit.b - 4 * fit.a * fit.c >= 0) return false;  // a parabola or hyperbola
   const double det = 4 * fit.a * fit.c - fit.b * fit.b;

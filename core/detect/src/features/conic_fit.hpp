@@ -4,6 +4,7 @@
 //
 // The fit is written out (a 5x5 solve on the stack) rather than cv::fitEllipse, which allocates
 // per call: warm detect allocates nothing with the circle on.
+#include <span>
 #include <vector>
 
 #include "fieldlines/detect/centre_circle.hpp"
@@ -32,6 +33,10 @@ ConicPoint conic_point(const Fit& fit, float x, float y);
 
 // Sampson's first-order distance of (x, y) from the conic, in px.
 float distance(const Fit& fit, float x, float y);
+
+// Whether at least half of `points` lie within `tolerance` px of the conic (a refit on the
+// paint replaces the ellipse only then).
+bool most_within(const Fit& fit, std::span<const ConicSample> points, float tolerance);
 
 // The ellipse of the conic in `fit` (coefficients and frame set); false when it is none, or
 // no circle's image (an axis under 4 px, more than 12:1).

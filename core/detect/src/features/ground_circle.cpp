@@ -92,6 +92,9 @@ Cover cover(std::span<const GroundPiece> ground, cv::Point2d c, double r, double
 // The circle and the pose's correction: centre x, y (m), radius (m), pitch and roll offsets (rad).
 using Params = cv::Vec<double, 5>;
 
+// A circle of positive radius, every parameter finite (the refinement can diverge).
+bool usable(const Params& p) { return p[2] > 0 && std::isfinite(p[0] + p[1] + p[2] + p[3] + p[4]); }
+
 // Gauss-Newton on the support's samples (work.ground_samples) with the pose and the radius held
 // near the given ones; the refined parameters.
 Params refine(const GroundCamera& camera, double radius, const std::vector<CircleWorkspace::GroundSample>& samples,
@@ -198,7 +201,7 @@ float fit_on_ground(std::span<const Marking> pieces, const GroundCamera& camera,
     cover(work.ground, {p[0], p[1]}, p[2], tolerance * radius, work.ground_support);
     gather_samples(pieces, GroundProjection(camera, p[3], p[4]), work.ground_support, work.ground_samples);
     p = refine(camera, radius, work.ground_samples, p);
-    if (!(p[2] > 0) || !std::isfinite(p[0] + p[1] + p[2] + p[3] + p[4])) return 0;
+    if (!usable(p)) return 0;
     to_ground(pieces, GroundProjection(camera, p[3], p[4]), radius, work.ground);
   }
   const Cover found = cover(work.ground, {p[0], p[1]}, p[2], kTolerance * radius, work.ground_support);
@@ -216,10 +219,7 @@ bool refit_on_ground(std::span<const CircleWorkspace::Point> paint, const Ground
   for (const CircleWorkspace::Point& q : paint) add_sample(at, q.x, q.y, work.ground_samples);
   p = refine(camera, radius, work.ground_samples, p);
   Fit candidate;
-  if (!(p[2] > 0) || !std::isfinite(p[0] + p[1] + p[2] + p[3] + p[4]) || !image_ellipse(camera, p, work, candidate)) return false;
-  const auto close = std::count_if(paint.begin(), paint.end(),
-                                   [&](const CircleWorkspace::Point& q) { return distance(candidate, q.x, q.y) <= tolerance; });
-  if (2 * close < static_cast<std::ptrdiff_t>(paint.size())) return false;
+  if (!usable(p) || !image_ellipse(camera, p, work, candidate) || !most_within(candidate, paint, tolerance)) return false;
   for (int k = 0; k < 5; ++k) work.ground_fit[static_cast<std::size_t>(k)] = p[k];
   fit = candidate;
   return true;
