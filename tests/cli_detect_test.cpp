@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <set>
 #include <string>
 #include <vector>
@@ -203,8 +202,7 @@ TEST_F(CliDetect, FeaturesWriteIntersectionsAndEllipses) {
 // --camera: a fixed camera over the field fits the centre circle on the turf as the library
 // does with the same camera; a bad camera file stops the run with a message naming the field.
 TEST_F(CliDetect, CameraFileFitsTheCircleOnTheTurfAsTheLibrary) {
-  const fieldlines::GroundCamera camera{.fx = 640, .fy = 640, .cx = 319.5, .cy = 239.5,
-                                        .pitch_rad = 30 * std::numbers::pi / 180, .roll_rad = 0, .height_m = 0.6};
+  const fieldlines::GroundCamera camera = fieldlines::test::ground_camera(30);
   // A circle of 0.75 m, 0.8 m ahead: the frame shows its far arc.
   cv::Mat img = fieldlines::test::painted_ground_circle(camera, {0.8, 0}, 0.75, 7);
   cv::Mat noise(img.size(), CV_8UC3);

@@ -22,18 +22,13 @@
 namespace fieldlines {
 namespace {
 
-using test::kPaint, test::kTurf, test::noisy;
+using test::ground_camera, test::kPaint, test::kTurf, test::noisy;
 
 constexpr double kDeg = std::numbers::pi / 180;
 
-GroundCamera camera(double pitch_deg = 35, double roll_deg = 0, double height = 0.6) {
-  return {.fx = 640, .fy = 640, .cx = 319.5, .cy = 239.5, .pitch_rad = pitch_deg * kDeg, .roll_rad = roll_deg * kDeg,
-          .height_m = height};
-}
-
 TEST(GroundCamera, AgreesWithTheRenderersCameraBothWays) {
   for (const auto& [pitch, roll, height] : {std::tuple{35.0, 0.0, 0.6}, {12.0, 5.0, 0.45}, {44.0, -6.0, 0.9}}) {
-    const GroundCamera c = camera(pitch, roll, height);
+    const GroundCamera c = ground_camera(pitch, roll, height);
     const synth::Pose pose{.position = {0, 0, height}, .yaw = 0, .pitch = pitch * kDeg, .roll = roll * kDeg};
     const synth::Camera rendered(synth::Intrinsics{.fx = c.fx, .fy = c.fy, .cx = c.cx, .cy = c.cy}, pose);
     const GroundProjection projection(c);
@@ -52,29 +47,29 @@ TEST(GroundCamera, AgreesWithTheRenderersCameraBothWays) {
 }
 
 TEST(GroundCamera, AboveTheHorizonAndBehindTheCameraAreNothing) {
-  const GroundProjection level(camera(0));
+  const GroundProjection level(ground_camera(0));
   EXPECT_FALSE(level.to_ground(320, 100)) << "above the horizon of a level camera";
   EXPECT_FALSE(level.to_ground(320, 239.5)) << "on the horizon";
   EXPECT_TRUE(level.to_ground(320, 400));
   EXPECT_FALSE(level.to_image({-1, 0})) << "behind the camera";
-  EXPECT_FALSE(GroundProjection(camera()).to_ground(std::nan(""), 10));
+  EXPECT_FALSE(GroundProjection(ground_camera()).to_ground(std::nan(""), 10));
 }
 
 TEST(GroundCamera, BadCamerasAreRefused) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  GroundCamera bad = camera();
+  GroundCamera bad = ground_camera();
   bad.fx = 0;
   EXPECT_THROW(validate(bad), Error);
-  bad = camera(), bad.height_m = -0.5;
+  bad = ground_camera(), bad.height_m = -0.5;
   EXPECT_THROW(validate(bad), Error);
-  bad = camera(), bad.cy = nan;
+  bad = ground_camera(), bad.cy = nan;
   EXPECT_THROW(validate(bad), Error);
-  EXPECT_THROW(validate(camera(90)), Error);
-  EXPECT_NO_THROW(validate(camera()));
+  EXPECT_THROW(validate(ground_camera(90)), Error);
+  EXPECT_NO_THROW(validate(ground_camera()));
   LineDetector detector;
   EXPECT_THROW(detector.set_camera(bad), Error);
   EXPECT_FALSE(detector.camera()) << "a refused camera leaves none";
-  detector.set_camera(camera());
+  detector.set_camera(ground_camera());
   EXPECT_TRUE(detector.camera());
 }
 
@@ -124,7 +119,7 @@ std::pair<double, int> arc_distance(const MarkingEllipse& e, const cv::RotatedRe
 // From 0.6 m above the turf, looking 30 degrees down, a circle 0.8 m ahead: the frame shows its
 // far arc; its image ellipse is about 1000 x 1300 px, centred below the frame's bottom.
 TEST(GroundCircle, TheArcOfACircleCloseByIsFoundOnTheTurf) {
-  const GroundCamera c = camera(30, 2);
+  const GroundCamera c = ground_camera(30, 2);
   const cv::Point2d centre(0.8, 0.05);
   const cv::Mat frame = noisy(test::painted_ground_circle(c, centre, 0.75, 7));
   const cv::RotatedRect truth = true_ellipse(c, centre, 0.75);
@@ -149,7 +144,7 @@ TEST(GroundCircle, TheArcOfACircleCloseByIsFoundOnTheTurf) {
 }
 
 TEST(GroundCircle, StraightLinesAreNoCircleOnTheTurf) {
-  const GroundCamera c = camera(30);
+  const GroundCamera c = ground_camera(30);
   cv::Mat clean(480, 640, CV_8UC3, kTurf);
   const GroundProjection projection(c);
   // A touch line, the halfway line and a goal area's corner, as they lie on the turf.

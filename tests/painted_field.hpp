@@ -26,6 +26,13 @@ inline cv::Mat noisy(const cv::Mat& clean, std::uint64_t seed = 7) {
   return out;
 }
 
+// A camera for the 640x480 frames below (focal length 640 px, centred), pitch and roll in degrees.
+inline GroundCamera ground_camera(double pitch_deg = 35, double roll_deg = 0, double height = 0.6) {
+  constexpr double kDeg = std::numbers::pi / 180;
+  return {.fx = 640, .fy = 640, .cx = 319.5, .cy = 239.5, .pitch_rad = pitch_deg * kDeg, .roll_rad = roll_deg * kDeg,
+          .height_m = height};
+}
+
 // Turf with a circle of `radius` m centred at `centre` on it, painted `width` px wide as camera
 // `c` sees it (its points behind the camera or far off the frame left out); no noise.
 inline cv::Mat painted_ground_circle(const GroundCamera& c, cv::Point2d centre, double radius, int width) {

@@ -10,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 #include <thread>
 #include <vector>
@@ -345,9 +344,7 @@ TEST(DetectionJob, DetectsAFolderProjectInTheBackgroundAndKeepsLabels) {
 // and none without.
 TEST(DetectionJob, TheRobotsCameraFitsTheCircleOnTheTurf) {
   studio_test::TempDir dir("detect-camera");
-  const double kDeg = std::numbers::pi / 180;
-  const fieldlines::GroundCamera camera{.fx = 640, .fy = 640, .cx = 319.5, .cy = 239.5, .pitch_rad = 30 * kDeg,
-                                        .roll_rad = 2 * kDeg, .height_m = 0.6};
+  const fieldlines::GroundCamera camera = fieldlines::test::ground_camera(30, 2);
   cv::imwrite((dir.path() / "arc.png").string(),
               fieldlines::test::noisy(fieldlines::test::painted_ground_circle(camera, {0.8, 0.05}, 0.75, 7)));
   fieldlines::Project p;
