@@ -115,6 +115,33 @@ TEST(Stripes, AWideWhiteBoardStandingOnTheTurfIsNoMarking) {
   expect_no_stripe(clean, 3);
 }
 
+// A band across the frame from row y0 (left) to y0 + 30 (right), `rows` rows tall.
+void band(cv::Mat& frame, int y0, int rows, const cv::Scalar& colour) {
+  const std::vector<cv::Point> corners{{0, y0}, {639, y0 + 30}, {639, y0 + 30 + rows}, {0, y0 + rows}};
+  cv::fillConvexPoly(frame, corners, colour);
+}
+
+// A near wide line seen through a lens with chromatic aberration: a blue fringe along one edge
+// and a yellow one along the other, darker than the turf (0.78 of it) but no robot's body.
+TEST(Stripes, AWideLineWithALensColourFringeIsAStripe) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  band(clean, 320, 3, cv::Scalar(150, 30, 0));  // blue, B + G + R 180 of the turf's 230
+  band(clean, 323, 26, kPaint);
+  band(clean, 349, 3, cv::Scalar(0, 100, 80));  // yellow, 180 too
+  const Detected r = detect(noisy(clean));
+  ASSERT_GE(r.markings.size(), 1u);
+  for (const Marking& m : r.markings) expect_centre_line(m, {0, 336}, {639, 366}, 26);
+}
+
+// The same white bar with a robot's dark body (a ninth of the turf's brightness) on one side is
+// no stripe, although its other edge's colours are a marking's.
+TEST(Stripes, AWhiteBarBesideADarkBodyIsNoMarking) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  band(clean, 300, 23, kDark);
+  band(clean, 323, 26, kPaint);
+  expect_no_stripe(clean, 1);
+}
+
 // The caller's segments: one edge of a line whose other edge was not detected.
 TEST(Stripes, ALineWithOneEdgeDetectedIsStillMeasured) {
   cv::Mat clean(480, 640, CV_8UC3, kTurf);

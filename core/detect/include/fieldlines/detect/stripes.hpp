@@ -15,8 +15,9 @@
 //    than half-way to the paint. The largest plausible width grows linearly towards the image
 //    bottom, where the field is nearest: `stripe_max_width` times the image height on the
 //    bottom row, a quarter of that on the top rows;
-//  - between paint and turf on either side only a fade (at most 10 px, for motion blur, never
-//    darker than the turf): a robot's dark body beside its white bar is no turf.
+//  - between paint and turf on either side only a fade (at most 10 px, for motion blur, or a
+//    lens's colour fringe; none darker than 0.7 of the field colour): a robot's dark body beside
+//    its white bar is no turf.
 // The width is the distance between the two half-way crossings of brightness (paint to turf),
 // so it does not depend on where in the edge's blur the segment was fitted. A profile that
 // leaves the image through its bottom or sides while still in paint counts neither way (a line
