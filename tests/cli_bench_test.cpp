@@ -91,7 +91,7 @@ TEST_F(CliBench, JsonListsAllSevenRowsInBothOrders) {
     else EXPECT_GT(segments, 0) << d;
   }
   EXPECT_EQ(names,
-            (std::vector<std::string>{"fieldlines", "fieldlines+light", "fieldlines+stripes", "fieldlines+junctions",
+            (std::vector<std::string>{"fieldlines", "fieldlines+light", "fieldlines+stripes", "fieldlines+coarse", "fieldlines+junctions",
                                       "fieldlines+features", "edlines", "fld", "lsd", "gradients", "floor"}));
   // The light adaptation finds the same segments (the field's colour is the reference's here).
   EXPECT_EQ(rows["fieldlines+light"]["segments_per_image"], rows["fieldlines"]["segments_per_image"]);
@@ -116,6 +116,9 @@ TEST_F(CliBench, JsonListsAllSevenRowsInBothOrders) {
   EXPECT_EQ(rows["fieldlines+junctions"]["segments_per_image"], rows["fieldlines+stripes"]["segments_per_image"]);
   expect_ratio_summary(j.at("junctions_over_plain"));
   expect_ratio_summary(j.at("features_over_plain"));
+  expect_ratio_summary(j.at("coarse_over_plain"));
+  // The coarse pass adds segments where the full scale has none, and never takes one away.
+  EXPECT_GE(rows["fieldlines+coarse"]["segments_per_image"], rows["fieldlines"]["segments_per_image"]);
 
   // The table shows both orders, the worse ratio with its spread and the target checks on it.
   EXPECT_NE(r.out.find("2 images x 3 rounds x 2 passes in each order (block, interleaved; seed 9)"), std::string::npos)

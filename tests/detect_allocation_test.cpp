@@ -267,6 +267,19 @@ TEST(DetectAllocations, NoneWithStripes) {
   expect_warm_detect_allocates_nothing(frames, names, all_features(), t);
 }
 
+// The coarse pass (DetectorParams::coarse_scale) downsamples into its own reused band and engine:
+// still nothing, alone and with every feature stage after it.
+TEST(DetectAllocations, NoneWithTheCoarsePass) {
+  const auto [frames, names] = synthetic_frames(4, 5);
+  DetectorParams coarse;
+  coarse.coarse_scale = 2;
+  coarse.coarse_from = 0.4;
+  expect_warm_detect_allocates_nothing(frames, names, coarse);
+  DetectorParams every = all_features();
+  every.coarse_scale = 3;
+  expect_warm_detect_allocates_nothing(frames, names, every);
+}
+
 // With the camera known the centre circle is also fitted on the turf (ground_circle.hpp); the
 // camera is set per frame, as a walking robot's pose changes: still nothing.
 TEST(DetectAllocations, NoneWithTheCameraSetPerFrame) {

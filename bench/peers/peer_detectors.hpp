@@ -16,7 +16,7 @@
 namespace fieldlines::peers {
 
 struct TimedDetector {
-  std::string name;  // "fieldlines", "fieldlines+light", "fieldlines+stripes",
+  std::string name;  // "fieldlines", "fieldlines+light", "fieldlines+stripes", "fieldlines+coarse",
                      // "fieldlines+junctions", "fieldlines+features", "edlines", "fld", "lsd",
                      // "gradients", "floor"
   std::string what;  // one line for tables and --help

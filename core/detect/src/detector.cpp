@@ -8,6 +8,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "box_downsample.hpp"
 #include "elsed/elsed.hpp"
 #include "features/field_pixel.hpp"
 #include "fieldlines/detect/error.hpp"
@@ -20,6 +21,10 @@ namespace fieldlines {
 // Hidden like the engine it holds (see elsed/line_model.hpp).
 struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   ElsedEngine engine;
+  ElsedEngine coarse_engine;    // the coarse pass (DetectorParams::coarse_scale)
+  DetectorParams coarse_params;  // the parameters scaled to it, set with the parameters
+  cv::Mat coarse_bgr;           // the band it reads, downsampled
+  std::vector<Segment> coarse;  // its segments, in full-scale pixels
   cv::Mat eight, bgr8;  // the input normalised to 8-bit BGR, reused between calls
   std::optional<Rgb> field;  // of the last frame, when measured
   FieldFeatures features;  // its field_boundary is the one the gate and field_boundary() use
@@ -37,9 +42,22 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   CircleWorkspace circle;
 };
 
+namespace {
+// The parameters of the coarse pass: lengths and the anchors' spacing in its own pixels.
+DetectorParams coarse_params_of(const DetectorParams& params) {
+  DetectorParams p = params;
+  const int f = std::max(params.coarse_scale, 1);
+  p.min_line_length = std::max(3, params.min_line_length / f);
+  p.scan_interval = std::max(1, params.scan_interval / f);
+  return p;
+}
+
+}  // namespace
+
 LineDetector::LineDetector(DetectorParams params, Thresholds thresholds)
     : params_(std::move(params)), thresholds_(thresholds), impl_(std::make_unique<Impl>()) {
   validate(params_);
+  impl_->coarse_params = coarse_params_of(params_);
 }
 LineDetector::~LineDetector() = default;
 LineDetector::LineDetector(LineDetector&&) noexcept = default;
@@ -106,6 +124,35 @@ struct MarkingColours {
     return !m.thresholds.field_boundary_gate || m.boundary.empty() || place_of(s, m.boundary) != BoundaryPlace::Above;
   }
 };
+// Whether some of `fine` lies along `s` (a coarse segment): at least three of five points along
+// s lie within `reach` px of a fine segment parallel to it (within 5 degrees), between that
+// one's ends, with its colour gradient on the same side. One painted edge, one segment: the
+// full scale's is the more exact, the coarse one fills only where it has none.
+bool covered(const Segment& s, std::span<const Segment> fine, float reach) {
+  constexpr float kParallelCos = 0.9962f;  // cos(5 degrees)
+  const float sx = s.x1 - s.x0, sy = s.y1 - s.y0, length = std::hypot(sx, sy);
+  if (!(length > 0)) return true;
+  const float nx = -sy / length, ny = sx / length;
+  const auto side = [&](const Segment& t) {
+    float along = 0;
+    for (int c = 0; c < 3; ++c) along += t.grad_x[c] * nx + t.grad_y[c] * ny;
+    return along >= 0;
+  };
+  const bool s_side = side(s);
+  int near = 0;
+  for (int k = 0; k < 5; ++k) {
+    const float f = (float(k) + 0.5f) / 5, px = s.x0 + f * sx, py = s.y0 + f * sy;
+    near += std::any_of(fine.begin(), fine.end(), [&](const Segment& t) {
+      const float tx = t.x1 - t.x0, ty = t.y1 - t.y0, tl = std::hypot(tx, ty);
+      if (!(tl > 0) || std::abs(sx * tx + sy * ty) < kParallelCos * length * tl) return false;
+      const float along = ((px - t.x0) * tx + (py - t.y0) * ty) / tl;
+      if (along < -reach || along > tl + reach) return false;
+      return std::abs((px - t.x0) * ty - (py - t.y0) * tx) / tl <= reach && side(t) == s_side;
+    });
+  }
+  return near >= 3;
+}
+
 // Into `out`, each of `segments` along which no piece lies: none parallel to it (within 5
 // degrees) with its middle on it (within 2 px of its line, between its ends).
 void collect_unpieced(std::span<const Segment> segments, std::span<const Segment> pieces, std::vector<Segment>& out) {
@@ -142,6 +189,7 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   const int gradient_threshold =
       adapted_gradient_threshold(params_.gradient_threshold, params_.dark_field, impl_->field);
   impl_->engine.run(*bgr, params_, gradient_threshold, out);
+  if (params_.coarse_scale > 1) add_coarse(*bgr, gradient_threshold, out);
   std::optional<float> gain;
   if (thresholds_.light.enabled && impl_->field)
     gain = light_gain(thresholds_.light.reference_field, *impl_->field);
@@ -150,6 +198,29 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   label(out, gain, thresholds_, f.field_boundary);
   if (stripes) find_stripes(*bgr, impl_->field, out, params_, impl_->stripes, f.markings);
   if (pieces) find_pieces(*bgr, gain, out);
+}
+
+// The coarse pass: the band from coarse_from down, cropped to whole cells of coarse_scale px and
+// averaged over them (box_downsample.hpp), detected with the coarse parameters; its segments mapped to
+// full-scale pixels (a cell's centre is f x + (f - 1) / 2) join `out` where none of them lies
+// along one already there. Every buffer is reused: no allocation once warm.
+void LineDetector::add_coarse(const cv::Mat& bgr, int gradient_threshold, std::vector<Segment>& out) {
+  const int f = params_.coarse_scale;
+  const int top = std::clamp(static_cast<int>(std::lround(params_.coarse_from * bgr.rows)), 0, bgr.rows);
+  const int w = bgr.cols / f, h = (bgr.rows - top) / f;
+  if (w < 3 || h < 3) return;
+  box_downsample(bgr(cv::Rect(0, top, w * f, h * f)), f, impl_->coarse_bgr);
+  std::vector<Segment>& coarse = impl_->coarse;
+  coarse.clear();
+  impl_->coarse_engine.run(impl_->coarse_bgr, impl_->coarse_params, gradient_threshold, coarse);
+  const float scale = static_cast<float>(f), shift = 0.5f * static_cast<float>(f - 1);
+  const std::size_t fine = out.size();
+  for (Segment s : coarse) {
+    s.x0 = scale * s.x0 + shift, s.x1 = scale * s.x1 + shift;
+    s.y0 = scale * s.y0 + shift + static_cast<float>(top), s.y1 = scale * s.y1 + shift + static_cast<float>(top);
+    s.saliency *= scale;  // validated pixels, counted at the full scale
+    if (!covered(s, {out.data(), fine}, scale + 0.5f)) out.push_back(s);
+  }
 }
 
 // The centre circle needs pieces shorter than the detector's minimum length (a curve has no
@@ -235,6 +306,7 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
 void LineDetector::set_params(const DetectorParams& params) {
   validate(params);
   params_ = params;
+  impl_->coarse_params = coarse_params_of(params_);
 }
 
 void LineDetector::set_camera(const std::optional<GroundCamera>& camera) {

@@ -77,6 +77,8 @@ class LineDetector {
   const cv::Mat* normalise(const cv::Mat& image);  // to 8-bit BGR; nullptr if smaller than 3x3
   // Junctions and the circle; `segments`: the detector's own, labelled.
   void find_pieces(const cv::Mat& bgr, std::optional<float> gain, std::span<const Segment> segments);
+  // The coarse pass of DetectorParams::coarse_scale: its segments where the full scale has none.
+  void add_coarse(const cv::Mat& bgr, int gradient_threshold, std::vector<Segment>& out);
   DetectorParams params_;
   Thresholds thresholds_;
   bool find_boundary_ = false;

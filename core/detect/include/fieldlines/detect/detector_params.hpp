@@ -54,6 +54,13 @@ struct DetectorParams {
   // in proportion for that frame, so a dim frame keeps the edges a bright one has; 0: off, the
   // method's fixed threshold.
   double dark_field = 0;
+  // Near rows hold wide lines on coarse, textured turf, whose edges break up at the full scale;
+  // far rows hold lines a pixel or two wide that a coarser scale loses. With coarse_scale above
+  // 1, the rows from coarse_from (a share of the height, from the top) down are detected a second
+  // time at 1 / coarse_scale of the size, and a coarse segment joins the full-scale ones where
+  // none of them lies along it (detector.cpp). 1: off, the method's one scale.
+  int coarse_scale = 1;
+  double coarse_from = 0.5;
   bool operator==(const DetectorParams&) const = default;
 };
 
@@ -79,7 +86,7 @@ struct ParamSpec {
   bool in_files = true;     // written into and read from thresholds and project files
 };
 
-inline constexpr std::array<ParamSpec, 24> kDetectorParamSpecs{{
+inline constexpr std::array<ParamSpec, 26> kDetectorParamSpecs{{
     {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
      .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
     {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
@@ -131,6 +138,11 @@ inline constexpr std::array<ParamSpec, 24> kDetectorParamSpecs{{
     {.name = "dark_field", .member = &DetectorParams::dark_field, .range = {0, 765},
      .help = "a field darker than this (R + G + B) lowers the gradient threshold in proportion; 0: off",
      .slider = {0, 765}},
+    {.name = "coarse_scale", .member = &DetectorParams::coarse_scale, .range = {1, 8},
+     .help = "also detect the rows below coarse_from at 1/k of the size (near, wide, textured lines); 1: off",
+     .slider = {1, 4}},
+    {.name = "coarse_from", .member = &DetectorParams::coarse_from, .range = {0, 1},
+     .help = "the coarse pass covers the rows below this share of the height", .slider = {0, 1}},
 }};
 
 // The spec named `name`, or nullptr.

@@ -1,0 +1,99 @@
+// The coarse pass (DetectorParams::coarse_scale): a wide near line on coarse, textured turf, whose
+// ragged edges break the full scale's drawing, gets segments along its edges; a far line one
+// pixel wide, above the coarse band, is found as before; one painted edge stays one segment.
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include "painted_field.hpp"
+
+#include "fieldlines/detect/detector.hpp"
+
+namespace fieldlines {
+namespace {
+
+// Turf in blocks of 4 px whose brightness varies by 45 % (artificial turf seen up close), a
+// white line 40 px wide from row 380 (left) to 412 (right) whose edges jump by up to 3 px from
+// column to column, and camera noise.
+cv::Mat textured_turf_with_a_near_line() {
+  cv::RNG rng(3);
+  cv::Mat blocks(121, 161, CV_32F), texture;
+  rng.fill(blocks, cv::RNG::NORMAL, 0, 1);
+  cv::resize(blocks, texture, cv::Size(644, 484), 0, 0, cv::INTER_NEAREST);
+  cv::Mat clean(480, 640, CV_8UC3);
+  for (int y = 0; y < 480; ++y)
+    for (int x = 0; x < 640; ++x) {
+      const float k = 1 + 0.45f * texture.at<float>(y, x);
+      clean.at<cv::Vec3b>(y, x) = {cv::saturate_cast<std::uint8_t>(50 * k), cv::saturate_cast<std::uint8_t>(140 * k),
+                                   cv::saturate_cast<std::uint8_t>(40 * k)};
+    }
+  for (int x = 0; x < 640; ++x) {
+    const int top = static_cast<int>(380 + 0.05 * x) + rng.uniform(-3, 4);
+    for (int y = top; y < std::min(top + 40, 480); ++y) clean.at<cv::Vec3b>(y, x) = {235, 240, 235};
+  }
+  return test::noisy(clean);
+}
+
+// Length of the segments that run along the edge from (0, y0) to (639, y0 + 32): parallel within
+// 5 degrees, both ends within 4 px of it.
+float along_edge(const std::vector<Segment>& segments, float y0) {
+  float total = 0;
+  for (const Segment& s : segments) {
+    const auto off = [&](float x, float y) { return std::abs(y - (y0 + 0.05f * x)); };
+    const float length = std::hypot(s.x1 - s.x0, s.y1 - s.y0);
+    const float slope = std::abs(s.x1 - s.x0) > 0 ? (s.y1 - s.y0) / (s.x1 - s.x0) : 1e9f;
+    if (off(s.x0, s.y0) <= 4 && off(s.x1, s.y1) <= 4 && std::abs(std::atan(slope) - std::atan(0.05f)) < 0.087f)
+      total += length;
+  }
+  return total;
+}
+
+std::vector<Segment> detect(const cv::Mat& frame, int coarse_scale, double coarse_from = 0.5) {
+  DetectorParams p;
+  p.coarse_scale = coarse_scale;
+  p.coarse_from = coarse_from;
+  LineDetector detector(p);
+  return detector.detect(frame);
+}
+
+TEST(CoarsePass, AWideNearLineOnTexturedTurfGetsSegmentsAlongItsEdges) {
+  const cv::Mat frame = textured_turf_with_a_near_line();
+  const std::vector<Segment> fine = detect(frame, 1), coarse = detect(frame, 3);
+  const float fine_length = along_edge(fine, 381) + along_edge(fine, 421);
+  const float coarse_length = along_edge(coarse, 381) + along_edge(coarse, 421);
+  EXPECT_LT(fine_length, 100) << "the full scale alone breaks up on this turf";
+  EXPECT_GT(coarse_length, 900) << "the coarse pass (a third of the size) draws both edges end to end";
+}
+
+// A painted line's two edges, sharp at the full scale, stay two segments with the coarse pass:
+// the coarse ones along them are dropped.
+TEST(CoarsePass, OnePaintedEdgeStaysOneSegment) {
+  cv::Mat clean(480, 640, CV_8UC3, test::kTurf);
+  cv::line(clean, {40, 400}, {600, 430}, test::kPaint, 12);
+  const cv::Mat frame = test::noisy(clean);
+  EXPECT_EQ(detect(frame, 2).size(), detect(frame, 1).size());
+}
+
+// A far line one pixel wide above the coarse band is found exactly as without it.
+TEST(CoarsePass, AFarOnePixelLineIsStillFound) {
+  cv::Mat clean(480, 640, CV_8UC3, test::kTurf);
+  cv::line(clean, {40, 80}, {600, 95}, test::kPaint, 1);
+  const cv::Mat frame = test::noisy(clean);
+  const std::vector<Segment> fine = detect(frame, 1), coarse = detect(frame, 2);
+  ASSERT_FALSE(fine.empty());
+  ASSERT_EQ(coarse.size(), fine.size());
+  for (std::size_t i = 0; i < fine.size(); ++i) EXPECT_EQ(coarse[i].x0, fine[i].x0);
+}
+
+TEST(CoarsePass, BandsTooSmallForTheScaleAreLeftOut) {
+  const cv::Mat frame = test::noisy(cv::Mat(480, 640, CV_8UC3, test::kTurf));
+  EXPECT_NO_THROW(detect(frame, 8, 1.0));   // an empty band
+  EXPECT_NO_THROW(detect(frame, 8, 0.97));  // a band of 1 coarse row
+  const cv::Mat tiny = test::noisy(cv::Mat(5, 5, CV_8UC3, test::kTurf));
+  EXPECT_NO_THROW(detect(tiny, 2, 0));
+}
+
+}  // namespace
+}  // namespace fieldlines
