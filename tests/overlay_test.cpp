@@ -53,6 +53,32 @@ TEST(Overlay, EachLabelHasItsOwnColour) {
   EXPECT_EQ(cv::countNonZero(image.reshape(1)), 0);
 }
 
+// Above the field boundary (stands, walls, lights) segments are faint by default, hidden at
+// opacity 0 and like the rest at 1; on the field they are drawn at full strength either way.
+TEST(Overlay, SegmentsAboveTheFieldBoundaryAreFaint) {
+  const cv::Mat image(240, 320, CV_8UC3, cv::Scalar(0, 0, 0));
+  const std::vector<Segment> segments{horizontal(40, Label::None), horizontal(200, Label::None)};
+  fieldlines::FieldBoundary field;
+  field.points = {{0, 100}, {319, 100}};
+  field.image_height = 240;
+  fieldlines::OverlayParams params;
+  params.thickness = 5;
+  params.legend = false;
+  const cv::Vec3b full = as_vec(params.none_colour);
+  params.field_boundary = &field;
+  const cv::Mat faint = fieldlines::draw_overlay(image, segments, params);
+  EXPECT_EQ(at(faint, 200, 200), full) << "on the field";
+  const cv::Vec3b above = at(faint, 200, 40);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(above[c], 0.3 * full[c], 2) << "faint above the boundary, channel " << c;
+  params.above_opacity = 0;
+  EXPECT_EQ(at(fieldlines::draw_overlay(image, segments, params), 200, 40), cv::Vec3b(0, 0, 0)) << "hidden";
+  params.above_opacity = 1;
+  EXPECT_EQ(at(fieldlines::draw_overlay(image, segments, params), 200, 40), full) << "like the rest";
+  params.field_boundary = nullptr;
+  params.above_opacity = 0;
+  EXPECT_EQ(at(fieldlines::draw_overlay(image, segments, params), 200, 40), full) << "no boundary: all alike";
+}
+
 TEST(Overlay, LegendIsDrawnWhenItFitsAndSkippedWhenNot) {
   const cv::Mat bright(480, 640, CV_8UC3, cv::Scalar(200, 200, 200));
   fieldlines::OverlayParams params;

@@ -48,7 +48,9 @@ options:
   --draw DIR        write an overlay per image to DIR/<name>.png
                     (the studio's palette: marking magenta, boundary blue, none yellow,
                     each over a dark outline; legend top-left; with field features
-                    drawn, theirs top-right)
+                    drawn, theirs top-right); segments above the field boundary
+                    (stands, walls, lights) faint, so what lies on the field reads first
+  --draw-all        ... every segment at full strength, above the field boundary too
   --stripes         keep only markings that are painted stripes (turf, paint, turf) and write
                     their centre lines and widths ("markings" in --json); the thresholds file's
                     "stripes" parameter otherwise (default off: the reference's behaviour)
@@ -95,6 +97,7 @@ struct Options {
   std::optional<fs::path> thresholds, json, csv, draw;  // json and csv checked as output paths
   int threads = 1;
   bool quiet = false;
+  bool draw_all = false;  // overlays: segments above the field boundary at full strength
   std::optional<GroundCamera> camera;
   std::optional<bool> stripes;  // overrides the thresholds file's
   bool features = false;        // turns every feature stage on
@@ -118,6 +121,8 @@ Options parse(const ParsedArgs& a) {
   if (const auto v = a.value("--draw")) o.draw = *v;
   o.threads = a.int_or("--threads", 1, 1, 256);
   o.quiet = a.flag("--quiet");
+  o.draw_all = a.flag("--draw-all");
+  if (o.draw_all && !o.draw) throw Error("--draw-all needs --draw DIR");
   if (const auto v = a.value("--camera")) o.camera = load_camera_file(*v);
   if (a.flag("--stripes") && a.flag("--no-stripes")) throw Error("--stripes and --no-stripes exclude each other");
   if (a.flag("--stripes")) o.stripes = true;
@@ -181,7 +186,7 @@ int cmd_detect(const Args& args) {
   const auto parsed = parse_or_print_help(
       args, {"--thresholds", "--json", "--csv", "--draw", "--threads", "--video", "--video-out", "--max-frames",
              "--camera"},
-      {"--quiet", "--stripes", "--no-stripes", "--features"}, help_text());
+      {"--quiet", "--stripes", "--no-stripes", "--features", "--draw-all"}, help_text());
   if (!parsed) return 0;
   const Options opt = parse(*parsed);
   if (opt.video) {
@@ -241,7 +246,10 @@ int cmd_detect(const Args& args) {
       d.ellipses = features.ellipses;
       if (opt.draw) {
         std::vector<unsigned char> png;
-        cv::Mat overlay = draw_overlay(image, d.segments);
+        OverlayParams look;
+        look.field_boundary = &detector.field_boundary();
+        if (opt.draw_all) look.above_opacity = 1;
+        cv::Mat overlay = draw_overlay(image, d.segments, look);
         draw_field_features(overlay, features);
         if (!cv::imencode(".png", overlay, png))
           throw Error("could not encode the overlay as PNG");

@@ -27,6 +27,7 @@ struct CanvasState {
   float pick_radius_px = 8;      // hover reach, in screen pixels at every zoom
   bool fit_requested = true;
   bool show_segments = true;
+  bool faint_above_field = true;  // segments above the field boundary faint (overlay_style.hpp)
   bool show_missed = false;   // tint paint that has no segment (Label tab)
   MissedPaintView missed;     // its cached computation
   ViewSettings settings;      // line width (Label tab)

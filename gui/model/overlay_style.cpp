@@ -58,6 +58,12 @@ std::string_view to_string(OverlayMode mode) { return kModeNames.name(mode); }
 
 Rgba label_colour(Label label) { return opaque(palette::label_rgb(label)); }
 
+SegmentStyle on_field_style(SegmentStyle style, const Segment& segment, const FieldBoundary& boundary, bool faint) {
+  if (faint && !boundary.empty() && place_of(segment, boundary) == BoundaryPlace::Above)
+    style.colour.a = static_cast<std::uint8_t>(std::lround(palette::kAboveFieldOpacity * style.colour.a));
+  return style;
+}
+
 SegmentStyle style_for(OverlayMode mode, Label truth, Label predicted, Label proposal) {
   if (mode != OverlayMode::Prediction && truth == Label::Unlabelled && proposal != Label::Unlabelled)
     return {label_colour(proposal), Stroke::Dashed, 2};

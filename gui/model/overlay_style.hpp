@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fieldlines/data/palette.hpp"
+#include "fieldlines/detect/field_boundary.hpp"
 #include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines::studio {
@@ -33,6 +34,10 @@ struct SegmentStyle {
 // The class colours of fieldlines/data/palette.hpp (shared with the CLI's --draw; its header
 // states the measured legibility on turf, white paint and dark walls), opaque.
 Rgba label_colour(Label label);
+
+// `style` as a segment above the field boundary is drawn (stands, walls, lights): its colour at
+// palette::kAboveFieldOpacity; unchanged on the field, when `faint` is off or without a boundary.
+SegmentStyle on_field_style(SegmentStyle style, const Segment& segment, const FieldBoundary& boundary, bool faint);
 
 // Drawn under every segment, a little wider: the colour then reads against bright turf and
 // white paint; on dark walls the colour itself carries it (palette.hpp).

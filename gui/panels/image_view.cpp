@@ -47,7 +47,9 @@ void draw_features(ImDrawList* draw, const studio::FeatureDrawing& d) {
 void draw_styled_line(ImDrawList* draw, ImVec2 a, ImVec2 b, const studio::SegmentStyle& style) {
   const ImU32 col = colour(style.colour);
   // The dark outline first, solid even under a dashed line, so the segment's extent shows.
-  draw->AddLine(a, b, colour(studio::kOutline), style.thickness + studio::kOutlineExtra);
+  studio::Rgba outline = studio::kOutline;
+  outline.a = style.colour.a;  // a faint segment's outline is as faint
+  draw->AddLine(a, b, colour(outline), style.thickness + studio::kOutlineExtra);
   if (style.stroke == studio::Stroke::Solid) {
     draw->AddLine(a, b, col, style.thickness);
     return;
@@ -167,7 +169,8 @@ void draw_image_view(studio::StudioController& controller, studio::CanvasState& 
   if (state.show_segments) {
     for (std::size_t i = 0; i < segments.size(); ++i) {
       const auto s = studio::to_screen(segments[i], state.view);
-      auto style = studio::style_for(state.mode, segments[i].label, predictions[i], controller.proposal(i));
+      auto style = studio::on_field_style(studio::style_for(state.mode, segments[i].label, predictions[i], controller.proposal(i)),
+                                          segments[i], controller.field_features().field_boundary, state.faint_above_field);
       style.thickness = state.settings.drawn_width(style.thickness, state.view.scale());
       draw_styled_line(draw, im(s.a), im(s.b), style);
     }

@@ -82,6 +82,9 @@ void draw_label_panel(studio::StudioController& controller, UiState& ui) {
   ui.image_view.mode = static_cast<studio::OverlayMode>(mode);
   ImGui::Checkbox("show segments", &ui.image_view.show_segments);
   ImGui::SameLine();
+  ImGui::Checkbox("faint above the field", &ui.image_view.faint_above_field);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("segments above the field boundary (stands, walls, lights) drawn faint");
+  ImGui::SameLine();
   ImGui::SetNextItemWidth(120);
   float line_width = ui.image_view.settings.line_width;
   if (ImGui::SliderFloat("line width", &line_width, studio::ViewSettings::kMinLineWidth,

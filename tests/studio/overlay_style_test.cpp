@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -215,3 +216,22 @@ TEST(OverlayStyle, AProposalIsDashedInItsClassColourAndNeverLooksLikeALabel) {
 }
 
 }  // namespace
+
+// Above the field boundary a segment's colour is faint (palette::kAboveFieldOpacity), on the
+// field unchanged; off, or without a boundary, every segment alike.
+TEST(OverlayStyle, SegmentsAboveTheFieldBoundaryAreFaint) {
+  fieldlines::FieldBoundary field;
+  field.points = {{0, 100}, {639, 100}};
+  field.image_height = 480;
+  fieldlines::Segment high, low;
+  high.x0 = 100, high.x1 = 300, high.y0 = high.y1 = 20;
+  low.x0 = 100, low.x1 = 300, low.y0 = low.y1 = 300;
+  const fs::SegmentStyle style{fs::label_colour(Label::None), fs::Stroke::Solid, 2};
+  EXPECT_EQ(fs::on_field_style(style, low, field, true).colour, style.colour);
+  const fs::SegmentStyle faint = fs::on_field_style(style, high, field, true);
+  EXPECT_EQ(faint.colour.a, static_cast<int>(std::lround(fieldlines::palette::kAboveFieldOpacity * 255)));
+  EXPECT_EQ(faint.colour.r, style.colour.r);
+  EXPECT_EQ(faint.stroke, style.stroke);
+  EXPECT_EQ(fs::on_field_style(style, high, field, false).colour, style.colour);
+  EXPECT_EQ(fs::on_field_style(style, high, fieldlines::FieldBoundary{}, true).colour, style.colour);
+}

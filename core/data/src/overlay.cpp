@@ -172,15 +172,15 @@ void draw_field_features(cv::Mat& canvas, const FieldFeatures& features, const O
   if (params.legend) draw_feature_legend(canvas, features, params);  // last: over the features
 }
 
-cv::Mat draw_overlay(const cv::Mat& image, std::span<const Segment> segments, const OverlayParams& params) {
-  cv::Mat canvas = to_bgr8(image).clone();
-  const int thickness =
-      params.thickness > 0 ? params.thickness : std::max(1, std::min(canvas.cols, canvas.rows) / 240);
-  const int dot_radius = params.endpoints ? thickness + 1 : 0;
-  // Unlabelled and "none" first, so field features are drawn on top where they overlap.
+namespace {
+// The segments `pick` takes, by label: unlabelled and "none" first, so field features are drawn
+// on top where they overlap.
+template <class Pick>
+void draw_segments(cv::Mat& canvas, std::span<const Segment> segments, const OverlayParams& params, int thickness,
+                   int dot_radius, Pick pick) {
   for (const Label pass : {Label::Unlabelled, Label::None, Label::Boundary, Label::Marking}) {
     for (const Segment& s : segments) {
-      if (s.label != pass) continue;
+      if (s.label != pass || !pick(s)) continue;
       if (!std::isfinite(s.x0) || !std::isfinite(s.y0) || !std::isfinite(s.x1) || !std::isfinite(s.y1))
         continue;
       // Outline then colour, per segment as in the studio: a feature drawn later keeps its
@@ -192,6 +192,25 @@ cv::Mat draw_overlay(const cv::Mat& image, std::span<const Segment> segments, co
       draw_segment(canvas, s, label_colour(s.label, params), thickness, dot_radius);
     }
   }
+}
+}  // namespace
+
+cv::Mat draw_overlay(const cv::Mat& image, std::span<const Segment> segments, const OverlayParams& params) {
+  cv::Mat canvas = to_bgr8(image).clone();
+  const int thickness =
+      params.thickness > 0 ? params.thickness : std::max(1, std::min(canvas.cols, canvas.rows) / 240);
+  const int dot_radius = params.endpoints ? thickness + 1 : 0;
+  const FieldBoundary* field = params.field_boundary && !params.field_boundary->empty() ? params.field_boundary : nullptr;
+  const auto above = [&](const Segment& s) { return field && place_of(s, *field) == BoundaryPlace::Above; };
+  // The segments above the field first, on a copy blended back at their opacity: faint under
+  // everything on the field.
+  if (field && params.above_opacity > 0) {
+    cv::Mat layer = canvas.clone();
+    draw_segments(layer, segments, params, thickness, dot_radius, above);
+    const double a = std::clamp(params.above_opacity, 0.0, 1.0);
+    cv::addWeighted(layer, a, canvas, 1 - a, 0, canvas);
+  }
+  draw_segments(canvas, segments, params, thickness, dot_radius, [&](const Segment& s) { return !above(s); });
   if (params.legend) draw_label_legend(canvas, segments, params);
   return canvas;
 }

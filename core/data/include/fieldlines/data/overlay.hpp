@@ -33,6 +33,11 @@ struct OverlayParams {
   // Label names and counts in the top-left corner, and the field features' in the top-right
   // (draw_field_features); each skipped when it won't fit.
   bool legend = true;
+  // What lies on the field reads first: segments above this boundary (stands, walls, lights)
+  // are drawn at `above_opacity` (0 hides them, 1 draws them like the rest); null or an empty
+  // boundary: every segment alike.
+  const FieldBoundary* field_boundary = nullptr;
+  double above_opacity = palette::kAboveFieldOpacity;
 };
 
 cv::Scalar label_colour(Label label, const OverlayParams& params = {});

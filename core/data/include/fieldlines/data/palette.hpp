@@ -36,6 +36,9 @@ inline constexpr Rgb kOutline{10, 10, 10};      // under every segment
 inline constexpr Rgb kMissedPaint{0, 255, 255};  // cyan
 inline constexpr Rgb kFieldBoundary{255, 255, 255};  // white over the outline: where the green ends
 inline constexpr Rgb kFeature{255, 150, 0};     // orange: centre lines, junctions, the circle (detect --draw)
+// Segments above the field boundary (stands, walls, lights) are drawn at this opacity, so what
+// lies on the field reads first (detect --draw unless --draw-all, the studio unless asked).
+inline constexpr double kAboveFieldOpacity = 0.3;
 inline constexpr float kOutlineExtra = 3;       // outline width = line width + this, pixels
 // A junction's marker for lines `thickness` px wide: a ring of this radius, and a tick per ray
 // from the ring out to the tick length; clear of the lines that meet there.
