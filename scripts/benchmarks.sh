@@ -200,7 +200,10 @@ for set_id, title, label, folder, options in sets:
                      if "junctions_over_plain" in j else "")
                   + (f" Every field feature on (those and the centre circle, which draws the frame a second time) "
                      f"against none: features/fieldlines = {worse(j['features_over_plain'])} (target <= 1.2)."
-                     if "features_over_plain" in j else ""), ""]
+                     if "features_over_plain" in j else "")
+                  + (f" The coarse pass (coarse_scale 2, the lower half drawn again at half the size) against one "
+                     f"scale: coarse/fieldlines = {worse(j['coarse_over_plain'])} (target <= 1.25)."
+                     if "coarse_over_plain" in j else ""), ""]
     ours = rows["fieldlines"]
     readme_speed.append(
         f"| {label} ({j['images']} images) | {ours['block']['mean_ms']:.2f} / {ours['interleaved']['mean_ms']:.2f} | "

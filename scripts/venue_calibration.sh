@@ -8,7 +8,8 @@
 #   (these with the built-in detector parameters: --keep-detector), and the calibration that
 #   chooses the detector parameters too (the command's default; detector_calibration.hpp),
 # and the recall ceiling (every segment called a marking: the share of line edges on any
-# segment) of the built-in and of the calibrated detector parameters. Prints Markdown. Before/after overlays of the scored
+# segment) of the built-in and of the calibrated detector parameters, and the calibrated file with
+# the coarse pass (coarse_scale 2 and 3 from half the height down) added. Prints Markdown. Before/after overlays of the scored
 # frames go to OUT_DIR/overlays/<venue>/{built-in,calibrated}/ (not into docs/: they are the
 # shared data's images).
 #   usage: bash scripts/venue_calibration.sh [OUT_DIR]   (default build/venue-calibration)
@@ -64,6 +65,13 @@ print('; '.join(parts))")
   if [[ -f "$out/$id-detector.json" ]]; then
     everything "$out/$id-detector.json" "$out/$id-everything.json"
     echo "| | | (recall ceiling of the calibrated detector) | | $(score "$id" "$out/$id-everything.json" | cut -d'|' -f2 | tr -d ' ') | |"
+    # The coarse pass (detector.cpp) added to the calibrated file, rows from half the height down.
+    for k in 2 3; do
+      python3 -c "import json,sys; t=json.load(open(sys.argv[1])); t['detector'].update(coarse_scale=$k, coarse_from=0.5); json.dump(t, open(sys.argv[2], 'w'))" \
+        "$out/$id-detector.json" "$out/$id-coarse$k.json"
+      everything "$out/$id-coarse$k.json" "$out/$id-coarse$k-everything.json"
+      echo "| | | calibrated detector + thresholds, coarse pass $k (ceiling $(score "$id" "$out/$id-coarse$k-everything.json" | cut -d'|' -f2 | tr -d ' ')) | $(score "$id" "$out/$id-coarse$k.json") | |"
+    done
   fi
 }
 each_venue venue_rows 6
