@@ -82,15 +82,15 @@ void draw_label_panel(studio::StudioController& controller, UiState& ui) {
   ui.image_view.mode = static_cast<studio::OverlayMode>(mode);
   ImGui::Checkbox("show segments", &ui.image_view.show_segments);
   ImGui::SameLine();
-  ImGui::Checkbox("faint above the field", &ui.image_view.faint_above_field);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("segments above the field boundary (stands, walls, lights) drawn faint");
-  ImGui::SameLine();
   ImGui::SetNextItemWidth(120);
   float line_width = ui.image_view.settings.line_width;
   if (ImGui::SliderFloat("line width", &line_width, studio::ViewSettings::kMinLineWidth,
                          studio::ViewSettings::kMaxLineWidth, "%.1fx")) {
     ui.image_view.settings.set_line_width(line_width);
   }
+  // On its own line: beside the two above it runs past the side panel's edge at 1280 px.
+  ImGui::Checkbox("faint above the field", &ui.image_view.faint_above_field);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("segments above the field boundary (stands, walls, lights) drawn faint");
   draw_legend(ui.image_view.mode);
   ImGui::Checkbox("show paint with no segment", &ui.image_view.show_missed);
   if (ImGui::IsItemHovered()) {
