@@ -1,17 +1,16 @@
 #!/usr/bin/env bash
 # Label-free calibration on real fields of other leagues, scored on frames it was not fitted on.
-# Per venue: calibrate on the venue's frames that have no hand-drawn truth, then score the
-# frames that have one (tests/data/hand_truth/<venue>, docs/calibration.md) with
-#   the built-in thresholds, the calibration without and with per-frame light adaptation,
-#   the built-in thresholds and the calibration with light adaptation, each with the stripes
-#   stage on (stripes.hpp: markings must be turf, paint, turf),
-#   (these with the built-in detector parameters: --keep-detector), and the calibration that
-#   chooses the detector parameters too (the command's default; detector_calibration.hpp),
-# and the recall ceiling (every segment called a marking: the share of line edges on any
-# segment) of the built-in and of the calibrated detector parameters, and the calibrated file with
-# the coarse pass (coarse_scale 2 and 3 from half the height down) added. Prints Markdown. Before/after overlays of the scored
-# frames go to OUT_DIR/overlays/<venue>/{built-in,calibrated}/ (not into docs/: they are the
-# shared data's images).
+# Per venue: its frames split in two halves (venue_common.sh: halves); each half calibrated
+# without labels and scored on the hand-drawn truth of the other half's frames
+# (tests/data/hand_truth/<venue>, docs/calibration.md), the two halves pooled. Rows: the built-in
+# thresholds; the calibration as the command makes it (detector parameters and thresholds,
+# detector_calibration.hpp), with its recall ceiling (every segment called a marking: the share
+# of line edges on any segment); that file with the turf's colours in several modes
+# (turf_colours.hpp) and with the coarse pass (coarse_scale 2 and 3 from half the height down).
+# Columns: marking P and R, the ceiling, the share of hand-drawn field-boundary columns within
+# 4 px. Prints Markdown. Overlays of the scored frames go to
+# OUT_DIR/overlays/<venue>/{built-in,calibrated}/ (not into docs/: they are the shared data's
+# images).
 #   usage: bash scripts/venue_calibration.sh [OUT_DIR]   (default build/venue-calibration)
 #   env:   FIELDLINES_BIN (default build/release/app/cli/fieldlines), SHARED (default ../shared)
 set -euo pipefail
@@ -23,58 +22,54 @@ rm -rf "$out"
 mkdir -p "$out"
 source scripts/venue_common.sh
 everything assets/default_thresholds.json "$out/everything.json"
-stripes() {  # THRESHOLDS -> the same file with the stripes stage on, beside it
-  local on="${1%.json}-stripes.json"
-  [[ $1 == assets/* ]] && on="$out/$(basename "${1%.json}")-stripes.json"
-  python3 -c "import json,sys; t=json.load(open(sys.argv[1])); t['detector']['stripes']=True; json.dump(t, open(sys.argv[2], 'w'))" "$1" "$on"
-  echo "$on"
+detector_with() {  # IN OUT KEY=VALUE...: a copy with detector parameters set
+  python3 - "$@" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1]))
+for kv in sys.argv[3:]:
+    k, v = kv.split("=")
+    t["detector"][k] = json.loads(v)
+json.dump(t, open(sys.argv[2], "w"))
+PY
 }
-echo "| venue | frames fitted / scored | thresholds | marking P | marking R | calibration says |"
-echo "|---|---|---|---:|---:|---|"
+# A row: LABEL THRESHOLDS [SAYS]: marking P | R, the recall ceiling of its detector, the boundary.
+row() {
+  local label=$1 th=$2 says=${3:-} ceiling=$out/ceiling
+  if [[ -f "$th-0.json" ]]; then per_half everything "$th" "$ceiling"; else everything "$th" "$ceiling.json"; ceiling=$ceiling.json; fi
+  echo "| | | $label | $(score "$id" "$th") | $(score "$id" "$ceiling" | cut -d'|' -f2 | tr -d ' ') | $(score "$id" "$th" boundary) | $says |"
+}
+echo "| venue | frames per half / scored | thresholds | marking P | marking R | on any segment | boundary within 4 px | calibration says |"
+echo "|---|---|---|---:|---:|---:|---:|---|"
 venue_rows() {
-  fitted=$(ls "$out/$id" | wc -l)
-  n_scored=$(wc -w <<<"$scored")
-  echo "| $title | $fitted / $n_scored | built-in | $(score "$id" assets/default_thresholds.json) | |"
-  echo "| | | built-in + stripes | $(score "$id" "$(stripes assets/default_thresholds.json)") | |"
-  for mode in no-light light detector; do
-    flag=(--keep-detector); [[ $mode == no-light ]] && flag+=(--no-light-adaptation)
-    [[ $mode == detector ]] && flag=()
-    label="calibrated"; [[ $mode == light ]] && label="calibrated + light adaptation"
-    [[ $mode == detector ]] && label="**calibrated detector + thresholds** (light adaptation, stripes)"
-    if "$bin" calibrate "$out/$id" -o "$out/$id-$mode.json" --json "$out/$id-$mode.fit.json" --quiet "${flag[@]}" \
-        2> "$out/$id-$mode.err"; then
-      says=$(python3 -c "
-import json; f=json.load(open('$out/$id-$mode.fit.json'))['fit']
+  local frames scored k
+  frames=$(( $(ls "$out/$id-fit0" | wc -l) )) scored=$(( $(ls "$out/$id-truth0" "$out/$id-truth1" | grep -c json) ))
+  echo "| $title | $frames + $(ls "$out/$id-fit1" | wc -l) / $scored | | | | | | |"
+  row "built-in" assets/default_thresholds.json
+  if ! calibrate_halves "$id" "$out/$id"; then
+    echo "| | | calibrated | | | | | refused: $(sed 's/^fieldlines calibrate: error: //' "$out/$id"-*.err | tr '\n' ' ') |"
+    return
+  fi
+  says=$(python3 -c "
+import json; f=json.load(open('$out/$id-0.fit.json'))['fit']
 m=f['marking']; parts=[('by contrast' if m['used_contrast'] else 'by colour')]
 if m['warning']: parts.append(m['warning'])
 if not f['boundary']['fitted']: parts.append('boundary off')
 print('; '.join(parts))")
-      echo "| | | $label | $(score "$id" "$out/$id-$mode.json") | $says |"
-      if [[ $mode == light ]]; then
-        echo "| | | $label + stripes | $(score "$id" "$(stripes "$out/$id-$mode.json")") | |"
-      fi
-    else
-      echo "| | | $label | | | refused: $(sed 's/^fieldlines calibrate: error: //' "$out/$id-$mode.err" | tr '\n' ' ') |"
-    fi
+  row "**calibrated** (detector + thresholds)" "$out/$id" "$says (first half)"
+  per_half detector_with "$out/$id" "$out/$id-turf" stripe_turf_colours=true
+  row "calibrated, stripes on turf colours" "$out/$id-turf"
+  for k in 2 3; do
+    per_half detector_with "$out/$id" "$out/$id-coarse$k" coarse_scale=$k coarse_from=0.5
+    row "calibrated, coarse pass $k" "$out/$id-coarse$k"
   done
-  scored_paths=(); for image in $scored; do scored_paths+=("$data/$image"); done
-  "$bin" detect --quiet --draw "$out/overlays/$id/built-in" "${scored_paths[@]}"
-  [[ -f "$out/$id-light.json" ]] &&
-    "$bin" detect --quiet --thresholds "$out/$id-light.json" --draw "$out/overlays/$id/calibrated" "${scored_paths[@]}"
-  echo "| | | (recall ceiling of the built-in detector) | | $(score "$id" "$out/everything.json" | cut -d'|' -f2 | tr -d ' ') | |"
-  if [[ -f "$out/$id-detector.json" ]]; then
-    everything "$out/$id-detector.json" "$out/$id-everything.json"
-    echo "| | | (recall ceiling of the calibrated detector) | | $(score "$id" "$out/$id-everything.json" | cut -d'|' -f2 | tr -d ' ') | |"
-    # The coarse pass (detector.cpp) added to the calibrated file, rows from half the height down.
-    for k in 2 3; do
-      python3 -c "import json,sys; t=json.load(open(sys.argv[1])); t['detector'].update(coarse_scale=$k, coarse_from=0.5); json.dump(t, open(sys.argv[2], 'w'))" \
-        "$out/$id-detector.json" "$out/$id-coarse$k.json"
-      everything "$out/$id-coarse$k.json" "$out/$id-coarse$k-everything.json"
-      echo "| | | calibrated detector + thresholds, coarse pass $k (ceiling $(score "$id" "$out/$id-coarse$k-everything.json" | cut -d'|' -f2 | tr -d ' ')) | $(score "$id" "$out/$id-coarse$k.json") | |"
-    done
-  fi
+  for k in 0 1; do
+    mapfile -t images < <(scored_images "$id" "$k")
+    [[ ${#images[@]} -gt 0 ]] || continue
+    "$bin" detect --quiet --draw "$out/overlays/$id/built-in" "${images[@]}"
+    "$bin" detect --quiet --thresholds "$out/$id-$k.json" --draw "$out/overlays/$id/calibrated" "${images[@]}"
+  done
 }
-each_venue venue_rows 6
+each_venue venue_rows 8
 
 echo
 echo "Synthetic Kid field, one light at a time: calibrated on 20 frames of one light (seed 1), scored"

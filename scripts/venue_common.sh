@@ -1,5 +1,6 @@
-# Sourced by venue_calibration.sh and detector_candidates.sh: the venues with hand-drawn truth,
-# which of their frames are fitted and which scored, and how a thresholds file is scored.
+# Sourced by the scripts that score on real venues (venue_calibration.sh, detector_candidates.sh,
+# junctions_real.sh, light_change.sh): the venues with hand-drawn truth, which of their frames are
+# fitted and which scored (halves), and how a thresholds file is scored.
 # Needs: $bin (the CLI), $data (the shared data folder), $out (a scratch folder).
 
 # venue|frames (glob under data)|title
@@ -23,27 +24,82 @@ json.dump(t, open(sys.argv[2], "w"))
 PY
 }
 
-# VENUE THRESHOLDS -> "P | R" of the markings on the venue's hand-drawn truth.
-score() {
-  "$bin" eval --hand "tests/data/hand_truth/$1" --data "$data" --thresholds "$2" --json "$out/score.json" >/dev/null
-  python3 -c "import json; m=json.load(open('$out/score.json'))['total']['marking']; print('%.3f | %.3f' % (m['precision'], m['recall']))"
-}
-
-# VENUE PATTERN: links the venue's frames without hand-drawn truth into $out/VENUE (what is
-# fitted) and sets $scored to the others (image paths under $data).
-fitting_frames() {
-  scored=$(python3 -c "import json,glob; print(' '.join(json.load(open(f))['image'] for f in glob.glob('tests/data/hand_truth/$1/*.json')))")
-  mkdir -p "$out/$1"
-  for image in $data/$2; do
-    [[ " $scored " == *" ${image#$data/} "* ]] || ln -s "$(realpath "$image")" "$out/$1/"
+# Every venue is split in two halves by the frames' order by name (even and odd positions). Each
+# half is calibrated on its own frames and scored on the hand-drawn truth of the other half's, so
+# every frame with truth is scored once, by thresholds fitted on frames that do not include it,
+# and the two halves' counts are pooled. $out/VENUE-fitK holds links to half K's frames,
+# $out/VENUE-truthK the truth files of the other half's frames (what half K's fit is scored on).
+halves() {
+  local id=$1 pattern=$2 k=0 image stem
+  rm -rf "$out/$id-fit0" "$out/$id-fit1" "$out/$id-truth0" "$out/$id-truth1"
+  mkdir -p "$out/$id-fit0" "$out/$id-fit1" "$out/$id-truth0" "$out/$id-truth1"
+  for image in $data/$pattern; do
+    ln -s "$(realpath "$image")" "$out/$id-fit$k/"
+    stem=$(basename "${image%.*}")
+    [[ -f "tests/data/hand_truth/$id/$stem.json" ]] && ln -s "$(realpath "tests/data/hand_truth/$id/$stem.json")" "$out/$id-truth$((1 - k))/"
+    k=$((1 - k))
   done
 }
 
-# CALLBACK CELLS: for each venue with hand-drawn truth, sets $id, $title and (fitting_frames) the
-# fitted frames and $scored, then runs CALLBACK; a venue whose frames are not in $data gets a
-# "not measured" row of CELLS cells instead.
+# VENUE K: the image paths (under $data) that half K's fit is scored on.
+scored_images() {
+  local f
+  for f in "$out/$1-truth$2"/*.json; do
+    [[ -e $f ]] && echo "$data/$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['image'])" "$f")"
+  done
+}
+
+# VENUE PREFIX [calibrate options]: PREFIX-K.json calibrated on half K (K = 0, 1), its report
+# PREFIX-K.fit.json and messages PREFIX-K.err; fails when either half is refused.
+calibrate_halves() {
+  local id=$1 prefix=$2 k status=0
+  shift 2
+  for k in 0 1; do
+    "$bin" calibrate "$out/$id-fit$k" -o "$prefix-$k.json" --json "$prefix-$k.fit.json" --quiet "$@" \
+      2>"$prefix-$k.err" || status=1
+  done
+  return $status
+}
+
+# FUNCTION IN_PREFIX OUT_PREFIX [ARGS]: FUNCTION IN_PREFIX-K.json OUT_PREFIX-K.json ARGS per half.
+per_half() {
+  local fn=$1 in=$2 to=$3 k
+  shift 3
+  for k in 0 1; do "$fn" "$in-$k.json" "$to-$k.json" "$@"; done
+}
+
+# VENUE THRESHOLDS [WHAT] -> the venue's figures pooled over both halves: THRESHOLDS is a file
+# (the same for both) or a PREFIX of per-half files. WHAT: "marking" (default) -> "P | R" of the
+# markings, "boundary" -> the share of hand-drawn field-boundary columns the detected boundary
+# lies within 4 px of.
+score() {
+  local id=$1 th=$2 what=${3:-marking} k file
+  for k in 0 1; do
+    file=$th; [[ -f "$th-$k.json" ]] && file="$th-$k.json"
+    rm -f "$out/score$k.json"
+    compgen -G "$out/$id-truth$k/*.json" >/dev/null || continue
+    "$bin" eval --hand "$out/$id-truth$k" --data "$data" --thresholds "$file" --json "$out/score$k.json" >/dev/null
+  done
+  python3 - "$what" "$out/score0.json" "$out/score1.json" <<'PY'
+import json, os, sys
+totals = [json.load(open(p))["total"] for p in sys.argv[2:] if os.path.exists(p)]
+if sys.argv[1] == "boundary":
+    n = sum(t["hand_field_boundary"]["columns"] for t in totals)
+    print("%.3f" % (sum(t["hand_field_boundary"]["within_4px"] for t in totals) / n) if n else "-")
+else:
+    m = [t["marking"] for t in totals]
+    predicted, visible = sum(x["predicted"] for x in m), sum(x["visible_px"] for x in m)
+    p = sum(x["correct"] for x in m) / predicted if predicted else 0.0
+    r = sum(x["covered_px"] for x in m) / visible if visible else 0.0
+    print("%.3f | %.3f" % (p, r))
+PY
+}
+
+# CALLBACK CELLS: for each venue with hand-drawn truth, sets $id, $title and $pattern, splits it
+# in halves, then runs CALLBACK; a venue whose frames are not in $data gets a "not measured" row
+# of CELLS cells instead.
 each_venue() {
-  local callback=$1 cells=$2 v pattern
+  local callback=$1 cells=$2 v
   for v in "${venues[@]}"; do
     IFS='|' read -r id pattern title <<<"$v"
     [[ -d "tests/data/hand_truth/$id" ]] || continue
@@ -51,7 +107,7 @@ each_venue() {
       echo "| $title | not measured: no $data |$(printf ' |%.0s' $(seq 3 "$cells"))"
       continue
     fi
-    fitting_frames "$id" "$pattern"
+    halves "$id" "$pattern"
     "$callback"
   done
 }

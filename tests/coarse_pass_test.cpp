@@ -10,6 +10,7 @@
 #include "painted_field.hpp"
 
 #include "fieldlines/detect/detector.hpp"
+#include "fieldlines/train/detector_calibration.hpp"
 
 namespace fieldlines {
 namespace {
@@ -85,6 +86,27 @@ TEST(CoarsePass, AFarOnePixelLineIsStillFound) {
   ASSERT_FALSE(fine.empty());
   ASSERT_EQ(coarse.size(), fine.size());
   for (std::size_t i = 0; i < fine.size(); ++i) EXPECT_EQ(coarse[i].x0, fine[i].x0);
+}
+
+// Calibration turns the coarse pass on where it adds stripes (a wide near line breaking up on
+// textured turf) and leaves it off where the full scale draws the lines already.
+TEST(CoarsePass, CalibrationChoosesItWhereNearLinesBreakUp) {
+  const DetectorCalibrationParams rule;
+  FieldContrast textured(rule, DetectorParams{});
+  for (int i = 0; i < 2; ++i) textured.add_image(textured_turf_with_a_near_line());
+  EXPECT_GE(textured.coarse_gain(), rule.min_coarse_gain);
+  EXPECT_EQ(calibrated_detector(DetectorParams{}, textured, rule).coarse_scale, rule.coarse_scale);
+  cv::Mat clean(480, 640, CV_8UC3, test::kTurf);
+  cv::line(clean, {40, 400}, {600, 430}, test::kPaint, 12);
+  cv::line(clean, {40, 120}, {600, 130}, test::kPaint, 3);
+  FieldContrast plain(rule, DetectorParams{});
+  plain.add_image(test::noisy(clean));
+  EXPECT_LT(plain.coarse_gain(), rule.min_coarse_gain);
+  EXPECT_EQ(calibrated_detector(DetectorParams{}, plain, rule).coarse_scale, 1);
+  // Without the measurement (the one-argument constructor) it is never chosen.
+  FieldContrast unmeasured(rule);
+  unmeasured.add_image(textured_turf_with_a_near_line());
+  EXPECT_EQ(unmeasured.coarse_gain(), 0);
 }
 
 TEST(CoarsePass, BandsTooSmallForTheScaleAreLeftOut) {

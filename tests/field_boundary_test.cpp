@@ -6,9 +6,11 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cli_test_support.hpp"
+#include "painted_field.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/field_boundary.hpp"
 #include "fieldlines/detect/light.hpp"
+#include "fieldlines/detect/turf_colours.hpp"
 #include "fieldlines/synth/synth.hpp"
 
 namespace fl = fieldlines;
@@ -36,6 +38,51 @@ TEST(FieldBoundary, FollowsTheTopOfTheGreenPastRobotsAndWideLines) {
   ASSERT_FALSE(b.empty());
   for (float x = 0; x < 640; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
   EXPECT_EQ(b.image_height, 480);
+}
+
+// A robot at the frame's side hides the field's far edge down to row 400: the hull's end would
+// fall from the field's edge to the robot's foot; it is held level instead.
+TEST(FieldBoundary, ARobotAtTheSideDoesNotPullTheEndDown) {
+  cv::Mat img = field_frame();
+  cv::rectangle(img, {560, 80}, {639, 400}, cv::Scalar(15, 15, 15), cv::FILLED);
+  fl::FieldBoundary b;
+  fl::find_field_boundary(img, b);
+  ASSERT_FALSE(b.empty());
+  for (float x = 0; x < 560; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
+  // Beyond the robot: level with the last column seen, not down at its foot.
+  EXPECT_NEAR(b.y_at(620), horizon(552), 6);
+}
+
+// A sunlit field with the shade of a window on it: the far part of the right third lies in warm
+// sun (a chromaticity 0.12 from the shade's median), its near part in the shade. With the
+// median's colour alone those columns end at the sun patch's lower edge, and the boundary runs
+// down to the right; the frame's own turf colours (turf_colours.hpp) hold it at the field's edge.
+TEST(FieldBoundary, SunAndShadeOnTheFieldKeepTheBoundaryAtItsEdge) {
+  cv::Mat img(480, 640, CV_8UC3, cv::Scalar(120, 120, 120));
+  const cv::Vec3f shade(60, 110, 50), sun(60, 210, 120);  // B, G, R
+  for (int y = 150; y < 480; ++y)
+    for (int x = 0; x < 640; ++x) {
+      // The sun patch x >= 430, y < 330, with a soft edge (a penumbra) 40 px wide.
+      const float in_x = std::clamp((float(x) - 410.f) / 40.f, 0.f, 1.f), in_y = std::clamp((350.f - float(y)) / 40.f, 0.f, 1.f);
+      const cv::Vec3f c = shade + (sun - shade) * (in_x * in_y);
+      img.at<cv::Vec3b>(y, x) = {cv::saturate_cast<std::uint8_t>(c[0]), cv::saturate_cast<std::uint8_t>(c[1]),
+                                 cv::saturate_cast<std::uint8_t>(c[2])};
+    }
+  img = fl::test::noisy(img);
+  const std::optional<fl::Rgb> field = fl::estimate_field_colour(img);
+  ASSERT_TRUE(field);
+  fl::TurfColours turf;
+  turf.measure(img, *field);
+  fl::FieldBoundary one_colour, turf_colours;
+  fl::find_field_boundary(img, *field, one_colour);
+  fl::find_field_boundary(img, *field, turf_colours, {}, &turf);
+  int right = 0, right_one_colour = 0;
+  for (int x = 0; x < 640; x += 8) {
+    right += std::abs(turf_colours.y_at(float(x)) - 150) <= 4;
+    right_one_colour += std::abs(one_colour.y_at(float(x)) - 150) <= 4;
+  }
+  EXPECT_EQ(right, 80) << "every column at the field's edge";
+  EXPECT_LT(right_one_colour, 70) << "the median's colour alone loses the sunlit columns";
 }
 
 // Skipping the samples between two field samples (max_jump) finds the tops that testing every

@@ -184,7 +184,7 @@ VenueInputs gather_for_venue(const std::vector<std::string>& paths, const Detect
                              const Thresholds& start, int every, bool quiet, bool keep_detector) {
   if (keep_detector) return {gather(paths, given, start, every, quiet), given, {{"calibrated", false}}};
   const DetectorCalibrationParams rule;
-  FieldContrast contrast(rule, given.gaussian_sigma);
+  FieldContrast contrast(rule, given);
   if (rule.follow_contrast) {
     visit_inputs(paths, every, quiet, {.frame = [&](const cv::Mat& image) { contrast.add_image(image); }, .failed = {}});
     const DetectorParams chosen = calibrated_detector(given, contrast, rule);

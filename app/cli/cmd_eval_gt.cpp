@@ -160,11 +160,16 @@ void print_feature_row(bool markdown, const std::string& scene, const std::strin
   }
 }
 
+// Columns within the feature score's boundary tolerance (4 px), as the synthetic fields count them.
+long within_boundary_px(const HandBoundary& b) {
+  const float px = synth::FeatureScoreParams{}.max_boundary_px;
+  return std::count_if(b.errors_px.begin(), b.errors_px.end(), [&](double e) { return e <= px; });
+}
+
 void print_hand_boundary_row(bool markdown, const std::string& folder, const Group& g) {
   const HandBoundary& b = g.hand_boundary;
   const long n = static_cast<long>(b.errors_px.size());
-  const float px = synth::FeatureScoreParams{}.max_boundary_px;
-  const long within_px = std::count_if(b.errors_px.begin(), b.errors_px.end(), [&](double e) { return e <= px; });
+  const long within_px = within_boundary_px(b);
   const std::string w4 = fmt(n > 0 ? double(within_px) / n : 0, n > 0),
                     ws = fmt(n > 0 ? double(b.within_share) / n : 0, n > 0), med = fmt(median(b.errors_px), n > 0);
   if (markdown)
@@ -196,6 +201,7 @@ nlohmann::json to_json(const Group& g) {
                         {"share", g.features.marking_share()}}},
           {"hand_field_boundary", {{"columns", g.hand_boundary.errors_px.size()},
                                    {"within_2pct_height", g.hand_boundary.within_share},
+                                   {"within_4px", within_boundary_px(g.hand_boundary)},
                                    {"median_error_px", median(g.hand_boundary.errors_px)}}}};
 }
 

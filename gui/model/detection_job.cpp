@@ -14,7 +14,7 @@ namespace {
 
 // The stripes check on every segment, not only on those the detector's thresholds call markings,
 // as the detector runs it and, in the same pass, with thin lines accepted.
-std::vector<StripeVerdict> verdicts(StripeCheck& check, const cv::Mat& image, const std::optional<Rgb>& field,
+std::vector<StripeVerdict> verdicts(StripeCheck& check, const cv::Mat& image, const FieldColours& field,
                                     std::span<const Segment> segments, const DetectorParams& params) {
   if (!check.run_with_thin_lines(image, field, segments, params))
     return std::vector<StripeVerdict>(segments.size(), StripeVerdict::Unchecked);
@@ -49,7 +49,7 @@ void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, 
         detector.detect(image, r.segments);
         r.detect_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         r.features = detector.features();
-        r.stripes = verdicts(stripes, image, detector.field_colour(), r.segments, every);
+        r.stripes = verdicts(stripes, image, detector.stripe_colours(), r.segments, every);
       } catch (const std::exception& e) {
         r.error = e.what();  // this image only; the others go on
       }

@@ -237,7 +237,7 @@ py::dict calibrate_images(const py::object& images, const py::object& thresholds
     py::gil_scoped_release nogil;
     // The venue's detector from a first look at the frames, as `fieldlines calibrate` does.
     if (!keep_detector) {
-      FieldContrast contrast({}, start.detector.gaussian_sigma);
+      FieldContrast contrast({}, start.detector);
       for (const cv::Mat& view : views) contrast.add_image(view);
       chosen = calibrated_detector(start.detector, contrast);
       detector_report = detector_provenance(contrast, chosen, contrast.frames() > 0);

@@ -27,6 +27,7 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   std::vector<Segment> coarse;  // its segments, in full-scale pixels
   cv::Mat eight, bgr8;  // the input normalised to 8-bit BGR, reused between calls
   std::optional<Rgb> field;  // of the last frame, when measured
+  TurfColours turf;          // of the last frame, when the boundary or the stripes took them
   FieldFeatures features;  // its field_boundary is the one the gate and field_boundary() use
   StripeWorkspace stripes;
   IntersectionWorkspace intersections;
@@ -186,6 +187,10 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   const bool stripes = params_.stripes || pieces;
   if (thresholds_.light.enabled || boundary || stripes || params_.dark_field > 0)
     impl_->field = estimate_field_colour(*bgr);
+  // The field boundary always takes the frame's turf colours; the stripes when asked.
+  impl_->turf.clear();
+  if (impl_->field && (boundary || (stripes && params_.stripe_turf_colours))) impl_->turf.measure(*bgr, *impl_->field);
+  const FieldColours colours = stripe_colours();
   const int gradient_threshold =
       adapted_gradient_threshold(params_.gradient_threshold, params_.dark_field, impl_->field);
   impl_->engine.run(*bgr, params_, gradient_threshold, out);
@@ -194,9 +199,9 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   if (thresholds_.light.enabled && impl_->field)
     gain = light_gain(thresholds_.light.reference_field, *impl_->field);
   FieldFeatures& f = impl_->features;
-  if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary);
+  if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary, {}, &impl_->turf);
   label(out, gain, thresholds_, f.field_boundary);
-  if (stripes) find_stripes(*bgr, impl_->field, out, params_, impl_->stripes, f.markings);
+  if (stripes) find_stripes(*bgr, colours, out, params_, impl_->stripes, f.markings);
   if (pieces) find_pieces(*bgr, gain, out);
 }
 
@@ -275,7 +280,8 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
     pieces.clear();
   }
   label(pieces, gain, short_pieces, f.field_boundary);
-  find_stripes(bgr, impl_->field, pieces, params_, impl_->piece_stripes, impl_->arcs);
+  const FieldColours turf = stripe_colours();
+  find_stripes(bgr, turf, pieces, params_, impl_->piece_stripes, impl_->arcs);
   std::vector<std::uint8_t>& on_ellipse = impl_->circle.on_ellipse;
   if (params_.centre_circle)
     find_centre_circle(impl_->arcs, impl_->circle, f.ellipses, bgr, impl_->field, camera_, params_.centre_circle_radius);
@@ -293,7 +299,7 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
     // false junctions (docs/detector.md).
     collect_unpieced(segments, pieces, impl_->unpieced);
     label(impl_->unpieced, gain, short_pieces, f.field_boundary);
-    find_stripes(bgr, impl_->field, impl_->unpieced, params_, impl_->unpieced_stripes, impl_->unpieced_lines,
+    find_stripes(bgr, turf, impl_->unpieced, params_, impl_->unpieced_stripes, impl_->unpieced_lines,
                  ThinLines::Refused, Shape::Straight);
     impl_->lines.insert(impl_->lines.end(), impl_->unpieced_lines.begin(), impl_->unpieced_lines.end());
     find_intersections(impl_->lines, params_, impl_->intersections, f.intersections, bgr.size());
@@ -316,6 +322,9 @@ void LineDetector::set_camera(const std::optional<GroundCamera>& camera) {
 
 const FieldBoundary& LineDetector::field_boundary() const { return impl_->features.field_boundary; }
 const std::optional<Rgb>& LineDetector::field_colour() const { return impl_->field; }
+FieldColours LineDetector::stripe_colours() const {
+  return {impl_->field, params_.stripe_turf_colours ? &impl_->turf : nullptr};
+}
 const FieldFeatures& LineDetector::features() const { return impl_->features; }
 
 LineDetector::GradientViews LineDetector::compute_gradients(const cv::Mat& image) {

@@ -53,11 +53,12 @@ void find_field_boundary(const cv::Mat& bgr8, FieldBoundary& out, const FieldBou
   if (const std::optional<Rgb> field = estimate_field_colour(bgr8)) find_field_boundary(bgr8, *field, out, params);
 }
 
-void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& out, const FieldBoundaryParams& params) {
+void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& out, const FieldBoundaryParams& params,
+                         const TurfColours* turf) {
   out.clear();
   out.image_height = bgr8.rows;
   if (bgr8.empty() || bgr8.type() != CV_8UC3) return;
-  const FieldPixel pixel(field, params);
+  const FieldPixel pixel(field, params, turf);
   const int paint_cap = static_cast<int>(std::lround(params.max_paint_fraction * bgr8.rows));
   const int column_step = std::max(params.column_step, 1), row_step = std::max(params.row_step, 1);
   const int gap = std::max(params.min_gap_px, static_cast<int>(std::lround(params.gap_fraction * bgr8.rows)));
@@ -114,6 +115,15 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
     out.points[kept++] = p;
   }
   out.points.resize(kept);
+  // Steep ends fall to an occluder or unrecognised turf at the side, not to the field's edge.
+  const auto steep = [&](const Point& end, const Point& inner) {
+    return end.y > inner.y && end.y - inner.y > params.max_end_slope * std::abs(end.x - inner.x);
+  };
+  std::size_t first = 0, last = out.points.size();
+  while (last - first > 2 && steep(out.points[first], out.points[first + 1])) ++first;
+  while (last - first > 2 && steep(out.points[last - 1], out.points[last - 2])) --last;
+  if (first > 0) std::copy(out.points.begin() + static_cast<long>(first), out.points.begin() + static_cast<long>(last), out.points.begin());
+  out.points.resize(last - first);
 }
 
 }  // namespace fieldlines

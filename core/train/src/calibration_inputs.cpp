@@ -22,11 +22,11 @@ void CalibrationInputs::add_image(LineDetector& detector, const cv::Mat& image) 
   } else {
     boundary_candidate_.insert(boundary_candidate_.end(), found_.size(), 1);
   }
-  add_marking_candidates(image, detector.field_colour());
+  add_marking_candidates(image, detector.stripe_colours());
   segments_.insert(segments_.end(), found_.begin(), found_.end());
 }
 
-void CalibrationInputs::add_marking_candidates(const cv::Mat& image, const std::optional<Rgb>& field) {
+void CalibrationInputs::add_marking_candidates(const cv::Mat& image, const FieldColours& field) {
   // Unchecked (every segment may be a marking) where the robot would not check either: stripes
   // off, or a frame without a field or in another pixel format, where the check keeps nothing.
   if (!stripe_params_.stripes || !stripe_check_.run(image, field, found_, stripe_params_)) {

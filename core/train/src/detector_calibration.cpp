@@ -8,6 +8,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/field_green.hpp"
 #include "fieldlines/train/percentile.hpp"
 
@@ -29,10 +30,47 @@ double histogram_percentile(const std::array<std::uint32_t, kMaxGradient + 1>& h
   return kMaxGradient;
 }
 
+// Every segment offered as a marking, the boundary class off, the field-boundary gate on: what
+// the stripes stage keeps of a frame is its stripes on the field.
+Thresholds every_segment_a_marking() {
+  Thresholds t;
+  t.marking.thresholds = {0.f, 90.f, 0.f};
+  t.boundary.thresholds = {1000.f, 0.f, 100000.f};
+  t.field_boundary_gate = true;
+  return t;
+}
+
+double stripe_px(LineDetector& detector, const cv::Mat& bgr, std::vector<Segment>& segments) {
+  detector.detect(bgr, segments);
+  double px = 0;
+  for (const Segment& s : segments)
+    if (s.label == Label::Marking) px += std::hypot(s.x1 - s.x0, s.y1 - s.y0);
+  return px;
+}
+
 }  // namespace
 
 FieldContrast::FieldContrast(const DetectorCalibrationParams& params, double gaussian_sigma)
     : params_(params), sigma_(gaussian_sigma) {}
+
+FieldContrast::FieldContrast(const DetectorCalibrationParams& params, const DetectorParams& given)
+    : params_(params), sigma_(given.gaussian_sigma) {
+  DetectorParams fine = field_detector(given, params);
+  fine.intersections = fine.centre_circle = false;
+  fine.coarse_scale = 1;
+  DetectorParams coarse = fine;
+  coarse.coarse_scale = params.coarse_scale;
+  coarse.coarse_from = params.coarse_from;
+  fine_ = std::make_unique<LineDetector>(fine, every_segment_a_marking());
+  coarse_ = std::make_unique<LineDetector>(coarse, every_segment_a_marking());
+}
+
+FieldContrast::~FieldContrast() = default;
+FieldContrast::FieldContrast(FieldContrast&&) noexcept = default;
+FieldContrast& FieldContrast::operator=(FieldContrast&&) noexcept = default;
+
+// A frame set with no stripe at the full scale but some with the coarse pass gains all of them.
+double FieldContrast::coarse_gain() const { return coarse_px_ > 0 ? coarse_px_ / std::max(fine_px_, 1.0) - 1 : 0.0; }
 
 void FieldContrast::add_image(const cv::Mat& bgr) {
   if (bgr.empty() || bgr.type() != CV_8UC3) return;
@@ -58,6 +96,11 @@ void FieldContrast::add_image(const cv::Mat& bgr) {
   if (n < kMinFieldPixels) return;
   texture_.push_back(histogram_percentile(histogram, n, params_.texture_percentile));
   paint_.push_back(histogram_percentile(histogram, n, params_.paint_percentile));
+  if (fine_) {
+    std::vector<Segment> segments;
+    fine_px_ += stripe_px(*fine_, bgr, segments);
+    coarse_px_ += stripe_px(*coarse_, bgr, segments);
+  }
 }
 
 double FieldContrast::texture() const { return median(texture_); }
@@ -76,6 +119,10 @@ DetectorParams calibrated_detector(const DetectorParams& given, const FieldContr
                                    const DetectorCalibrationParams& params) {
   if (contrast.frames() == 0) return given;
   DetectorParams d = field_detector(given, params);
+  if (contrast.coarse_gain() >= params.min_coarse_gain) {
+    d.coarse_scale = params.coarse_scale;
+    d.coarse_from = params.coarse_from;
+  }
   if (!params.follow_contrast) return d;
   const double wanted = std::max(params.paint_share * contrast.paint(), params.texture_margin * contrast.texture());
   d.gradient_threshold = std::clamp(static_cast<int>(std::lround(wanted)), params.min_gradient_threshold,
@@ -96,6 +143,8 @@ nlohmann::json detector_provenance(const FieldContrast& contrast, const Detector
           {"gradient_threshold", chosen.gradient_threshold},
           {"scan_interval", chosen.scan_interval},
           {"min_line_length", chosen.min_line_length},
+          {"coarse_gain", contrast.coarse_gain()},
+          {"coarse_scale", chosen.coarse_scale},
           {"stripes", chosen.stripes}};
 }
 

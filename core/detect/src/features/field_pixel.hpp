@@ -2,13 +2,16 @@
 // Whether a pixel shows the field or paint, against the frame's own field colour (light.hpp).
 // One rule for the field boundary and the stripes: a loose "green dominates" test also passes
 // grey walls under a greenish camera, so a field pixel must match the field's chromaticity and
-// lie within a brightness range of it; paint is brighter than the field and nearly grey.
+// lie within a brightness range of it; paint is brighter than the field and nearly grey. With the
+// frame's turf colours (turf_colours.hpp), a pixel in any of them is field too: the turf in sun
+// and in shade, not only in the median's light.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 
 #include "fieldlines/detect/field_boundary.hpp"
 #include "fieldlines/detect/segment.hpp"
+#include "fieldlines/detect/turf_colours.hpp"
 
 namespace fieldlines {
 
@@ -26,8 +29,11 @@ inline bool near_grey(const std::uint8_t* bgr, int sum, float max_chroma) {
 
 class FieldPixel {
  public:
-  FieldPixel(const Rgb& field, const FieldBoundaryParams& params)
-      : p_(params), sum_(std::max(field[0] + field[1] + field[2], 1.f)), r_(field[0] / sum_), g_(field[1] / sum_) {}
+  // `turf`, when given and measured, widens the field's colour to the frame's turf colours; it
+  // must outlive this.
+  FieldPixel(const Rgb& field, const FieldBoundaryParams& params, const TurfColours* turf = nullptr)
+      : p_(params), sum_(std::max(field[0] + field[1] + field[2], 1.f)), r_(field[0] / sum_), g_(field[1] / sum_),
+        turf_(turf && !turf->empty() ? turf : nullptr) {}
 
   float field_sum() const { return sum_; }  // R + G + B of the field colour (at least 1)
 
@@ -36,7 +42,8 @@ class FieldPixel {
     // The same value as the float sum of the three (exact either way): one conversion, not three.
     const float sum = float(bgr[0] + bgr[1] + bgr[2]);
     if (sum < p_.min_brightness * sum_ || sum > p_.max_brightness * sum_) return false;
-    return std::abs(bgr[2] / sum - r_) + std::abs(bgr[1] / sum - g_) <= p_.chroma_tolerance;
+    const float r = bgr[2] / sum, g = bgr[1] / sum;
+    return std::abs(r - r_) + std::abs(g - g_) <= p_.chroma_tolerance || (turf_ && turf_->contains(r, g));
   }
   bool paint(const std::uint8_t* bgr) const {
     const int sum = bgr[0] + bgr[1] + bgr[2];
@@ -46,6 +53,7 @@ class FieldPixel {
  private:
   FieldBoundaryParams p_;
   float sum_, r_, g_;
+  const TurfColours* turf_;
 };
 
 }  // namespace fieldlines

@@ -359,12 +359,12 @@ void pair_stripes(std::span<Segment> segments, std::vector<Candidate>& cs, const
 
 }  // namespace
 
-void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<Segment> segments,
+void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segment> segments,
                   const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out, ThinLines thin,
                   Shape shape) {
   work.candidates.clear();
   if (!bgr8.empty() && bgr8.type() == CV_8UC3 && field) {
-    const FieldPixel pixel(*field, FieldBoundaryParams{});
+    const FieldPixel pixel(*field.median, FieldBoundaryParams{}, field.turf);
     for (std::size_t i = 0; i < segments.size(); ++i) {
       if (segments[i].label != Label::Marking) continue;
       Candidate c;
@@ -376,7 +376,7 @@ void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::spa
   pair_stripes(segments, work.candidates, params, out);
 }
 
-bool StripeCheck::run(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<const Segment> segments,
+bool StripeCheck::run(const cv::Mat& bgr8, const FieldColours& field, std::span<const Segment> segments,
                       const DetectorParams& params, ThinLines thin) {
   flags_.clear();
   if (!field || bgr8.type() != CV_8UC3) return false;
@@ -387,7 +387,7 @@ bool StripeCheck::run(const cv::Mat& bgr8, const std::optional<Rgb>& field, std:
   return true;
 }
 
-bool StripeCheck::run_with_thin_lines(const cv::Mat& bgr8, const std::optional<Rgb>& field,
+bool StripeCheck::run_with_thin_lines(const cv::Mat& bgr8, const FieldColours& field,
                                       std::span<const Segment> segments, const DetectorParams& params) {
   flags_.clear();
   thin_flags_.clear();
@@ -397,7 +397,7 @@ bool StripeCheck::run_with_thin_lines(const cv::Mat& bgr8, const std::optional<R
   // would measure from them beside.
   work_.candidates.clear();
   refused_.clear();
-  const FieldPixel pixel(*field, FieldBoundaryParams{});
+  const FieldPixel pixel(*field.median, FieldBoundaryParams{}, field.turf);
   for (std::size_t i = 0; i < checked_.size(); ++i) {
     Candidate c, r;
     c.segment = i;

@@ -19,6 +19,7 @@
 #include "fieldlines/detect/field_features.hpp"
 #include "fieldlines/detect/ground_camera.hpp"
 #include "fieldlines/detect/segment.hpp"
+#include "fieldlines/detect/turf_colours.hpp"
 
 namespace fieldlines {
 
@@ -59,6 +60,9 @@ class LineDetector {
   // The field colour of the last detect() (light.hpp), measured once when the light adaptation,
   // the field boundary or the stripes needed it; empty otherwise, or when the frame shows no field.
   const std::optional<Rgb>& field_colour() const;
+  // What the stripes tested turf against: that colour, with the frame's turf colours when
+  // DetectorParams::stripe_turf_colours is on. Valid until the next detect().
+  FieldColours stripe_colours() const;
   // The field features of the last detect() (field_features.hpp): the stripes' centre lines
   // when DetectorParams::stripes is on (stripes.hpp), the junctions when intersections is on
   // (intersections.hpp), the field boundary as field_boundary() has it; empty otherwise.

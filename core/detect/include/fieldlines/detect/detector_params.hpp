@@ -38,6 +38,10 @@ struct DetectorParams {
   int stripe_samples = 5;
   double stripe_max_width = 0.15;
   bool stripe_require_twin = false;
+  // The stripes' turf in every colour the frame's own turf shows (turf_colours.hpp: sun and
+  // shade, patchy turf), not only within a tolerance of its median colour (the field boundary
+  // always takes them). Off: the median's colour alone (docs/detector.md has both measured).
+  bool stripe_turf_colours = false;
   // L, T and X junctions of the stripes' centre lines (intersections.hpp). Off by default like
   // the stripes; on, it runs the stripes stage too (its input).
   bool intersections = false;
@@ -86,7 +90,7 @@ struct ParamSpec {
   bool in_files = true;     // written into and read from thresholds and project files
 };
 
-inline constexpr std::array<ParamSpec, 26> kDetectorParamSpecs{{
+inline constexpr std::array<ParamSpec, 27> kDetectorParamSpecs{{
     {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
      .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
     {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
@@ -123,6 +127,8 @@ inline constexpr std::array<ParamSpec, 26> kDetectorParamSpecs{{
      .slider = {0.02, 0.5}},
     {.name = "stripe_require_twin", .member = &DetectorParams::stripe_require_twin,
      .help = "a stripe must have both edges detected; otherwise one edge with its profile suffices"},
+    {.name = "stripe_turf_colours", .member = &DetectorParams::stripe_turf_colours,
+     .help = "a stripe's turf is any colour the frame's own turf shows (sun, shade), not only near its median colour"},
     {.name = "intersections", .member = &DetectorParams::intersections,
      .help = "find L, T and X junctions of the stripes' centre lines (runs the stripes stage too)"},
     {.name = "intersection_min_angle", .member = &DetectorParams::intersection_min_angle, .range = {0, 90, true},

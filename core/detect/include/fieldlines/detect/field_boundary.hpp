@@ -12,13 +12,19 @@
 // are up to 3 side by side), then replaced by their upper convex hull: a robot or player standing
 // on the field hides the green behind it and pulls its columns down, but the boundary of a flat
 // field seen from inside it is convex in the image, so the hull bridges such notches
-// (B-Human's field boundary does the same). A frame without green gives an empty boundary.
+// (B-Human's field boundary does the same). A notch at the frame's side has no column beyond it
+// to bridge to: a robot standing at the side, a fisheye's dark corner or turf in a light the
+// field colour misses pulls the hull's end down towards the bottom corner, and everything on
+// that side would lie above the field. So the hull's end pieces that fall towards the frame's
+// side more steeply than `max_end_slope` are dropped, and the boundary is held level from the
+// last piece kept (FieldBoundary::y_at). A frame without green gives an empty boundary.
 // Buffers are the caller's and keep their capacity: no allocation once warm.
 #include <vector>
 
 #include <opencv2/core/mat.hpp>
 
 #include "fieldlines/detect/segment.hpp"
+#include "fieldlines/detect/turf_colours.hpp"
 
 
 namespace fieldlines {
@@ -39,6 +45,9 @@ struct FieldBoundaryParams {
   // skipped when it is field (capped so that the skipped run is shorter than the gap): the same
   // tops as testing every sample (0), with a few reads per column.
   int max_jump = 8;
+  // Rows per column: a hull end falling towards the frame's side more steeply is dropped (45
+  // degrees: a field corner seen from inside falls away at half that).
+  float max_end_slope = 1.0f;
 };
 
 struct FieldBoundary {
@@ -65,9 +74,10 @@ BoundaryPlace place_of(const Segment& segment, const FieldBoundary& boundary);
 Label gate_by_field_boundary(const Segment& segment, const FieldBoundary& boundary);
 
 // 8-bit BGR input; anything else gives an empty boundary. The first form measures the frame's
-// field colour itself (light.hpp); the second takes it from a caller that already has it.
+// field colour itself (light.hpp); the second takes it from a caller that already has it, with
+// the frame's turf colours when given (a field in sun and shade: turf_colours.hpp).
 void find_field_boundary(const cv::Mat& bgr8, FieldBoundary& out, const FieldBoundaryParams& params = {});
 void find_field_boundary(const cv::Mat& bgr8, const Rgb& field_colour, FieldBoundary& out,
-                         const FieldBoundaryParams& params = {});
+                         const FieldBoundaryParams& params = {}, const TurfColours* turf = nullptr);
 
 }  // namespace fieldlines

@@ -53,6 +53,7 @@
 #include "fieldlines/detect/detector_params.hpp"
 #include "fieldlines/detect/field_features.hpp"
 #include "fieldlines/detect/segment.hpp"
+#include "fieldlines/detect/turf_colours.hpp"
 
 namespace fieldlines {
 
@@ -87,9 +88,10 @@ enum class ThinLines : std::uint8_t { Refused, Accepted };
 enum class Shape : std::uint8_t { Any, Straight };
 
 // `bgr8`: the frame the segments were detected in (8-bit BGR; anything else keeps no marking).
-// `field`: the frame's field colour (LineDetector measures it); empty: no turf anywhere.
+// `field`: the frame's field colour (LineDetector measures it), with its turf colours when the
+// detector measured them (DetectorParams::stripe_turf_colours); empty: no turf anywhere.
 // Relabels `segments` in place and writes one Marking per stripe into `out` (cleared first).
-void find_stripes(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<Segment> segments,
+void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segment> segments,
                   const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out,
                   ThinLines thin = ThinLines::Refused, Shape shape = Shape::Any);
 
@@ -100,7 +102,7 @@ class StripeCheck {
  public:
   // False when the frame allows no check (no field colour, not 8-bit BGR); otherwise flags()
   // holds one flag per segment, 1 for a stripe.
-  bool run(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<const Segment> segments,
+  bool run(const cv::Mat& bgr8, const FieldColours& field, std::span<const Segment> segments,
            const DetectorParams& params, ThinLines thin = ThinLines::Refused);
   const std::vector<std::uint8_t>& flags() const { return flags_; }
 
@@ -108,7 +110,7 @@ class StripeCheck {
   // from one set of profiles per segment (the two differ only in the profiles whose peak is
   // paint too thin to leave the field colour): the same flags as the two runs, at about half
   // their cost.
-  bool run_with_thin_lines(const cv::Mat& bgr8, const std::optional<Rgb>& field, std::span<const Segment> segments,
+  bool run_with_thin_lines(const cv::Mat& bgr8, const FieldColours& field, std::span<const Segment> segments,
                            const DetectorParams& params);
   const std::vector<std::uint8_t>& thin_flags() const { return thin_flags_; }
 

@@ -54,7 +54,7 @@ class CalibrationInputs {
     std::size_t begin, end;  // the frame's segments
     Rgb colour;
   };
-  void add_marking_candidates(const cv::Mat& image, const std::optional<Rgb>& field);
+  void add_marking_candidates(const cv::Mat& image, const FieldColours& field);
 
   std::vector<Segment> segments_, found_;
   std::vector<std::uint8_t> boundary_candidate_, marking_candidate_;

@@ -14,8 +14,17 @@
 // where it lowers it, it won recall on one venue and lost 0.15 of precision on another
 // (docs/calibration.md, "A dim field"). The field's contrast is measured and recorded either way.
 //
+// The coarse pass (DetectorParams::coarse_scale) is chosen from the frames too: each frame is
+// detected with and without it, every segment offered as a marking, and the length of the
+// stripes (turf, paint, turf, below the field boundary) compared. Where wide near lines on
+// textured turf break up at the full scale, the coarse pass adds a quarter or more to that length
+// (Humanoid frames: 0.26, 0.29 on two halves); elsewhere less than a seventh (MSL 0.05-0.13, SSL
+// 0), where it adds more clutter than lines
+// (docs/detector.md, "The coarse pass").
+//
 // Units: gradients are the detector's, Sobel |dx| + |dy| of the smoothed grey image.
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -35,31 +44,47 @@ struct DetectorCalibrationParams {
   double texture_margin = 1.5;      // and stays this far above the turf's texture
   int min_gradient_threshold = 8;   // below: sensor noise on any field
   bool follow_contrast = false;     // the threshold from the contrast, below: measured mixed
+  int coarse_scale = 3;             // the coarse pass tried (3 recovered more than 2 on Humanoid)...
+  double coarse_from = 0.5;         // ...from half the height down...
+  double min_coarse_gain = 0.2;     // ...and kept when it adds this share to the stripes' length
 };
 
 // The field's contrast per frame: percentiles of the gradient on its green pixels
 // (field_green.hpp), smoothed as the calibrated detector will smooth.
+class LineDetector;
+
 class FieldContrast {
  public:
   explicit FieldContrast(const DetectorCalibrationParams& params = {}, double gaussian_sigma = 1.0);
+  // The same, and the coarse pass's gain measured with field_detector(given, params).
+  FieldContrast(const DetectorCalibrationParams& params, const DetectorParams& given);
+  ~FieldContrast();
+  FieldContrast(FieldContrast&&) noexcept;
+  FieldContrast& operator=(FieldContrast&&) noexcept;
   // A frame without green pixels (no field in view) adds nothing.
   void add_image(const cv::Mat& bgr);
   std::size_t frames() const { return texture_.size(); }
   double texture() const;  // medians over the frames; 0 when none showed a field
   double paint() const;
+  // The stripes' length with the coarse pass over that without (at least 1 px), less 1, over all
+  // frames; 0 when not measured (the first constructor) or no stripe was seen.
+  double coarse_gain() const;
 
  private:
   DetectorCalibrationParams params_;
   double sigma_;
   std::vector<double> texture_, paint_;
   cv::Mat grey_, smooth_, dx_, dy_;
+  std::unique_ptr<LineDetector> fine_, coarse_;  // both set, or neither
+  double fine_px_ = 0, coarse_px_ = 0;
 };
 
 // `given` with the anchor grid, minimum length and smoothing of `params` and the stripes stage
 // on: the choice below when a frame showed a field and follow_contrast is off.
 DetectorParams field_detector(const DetectorParams& given, const DetectorCalibrationParams& params = {});
 
-// field_detector(given, params); with follow_contrast, the gradient threshold from `contrast`: paint_share of the paint's
+// field_detector(given, params), with the coarse pass where `contrast` measured it to add
+// min_coarse_gain; with follow_contrast, the gradient threshold from `contrast`: paint_share of the paint's
 // contrast, at least texture_margin times the turf's texture, never above the given threshold.
 // Without a frame that showed a field, `given` unchanged.
 DetectorParams calibrated_detector(const DetectorParams& given, const FieldContrast& contrast,

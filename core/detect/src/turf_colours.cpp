@@ -1,0 +1,89 @@
+#include "fieldlines/detect/turf_colours.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fieldlines {
+
+int TurfColours::bins() const {
+  return measured_ ? static_cast<int>(std::count(turf_.begin(), turf_.end(), std::uint8_t{1})) : 0;
+}
+
+void TurfColours::measure(const cv::Mat& bgr8, const Rgb& field, const TurfColourParams& params) {
+  measured_ = false;
+  if (bgr8.empty() || bgr8.type() != CV_8UC3) return;
+  const float field_sum = std::max(field[0] + field[1] + field[2], 1.f);
+  const float lo = params.min_brightness * field_sum, hi = params.max_brightness * field_sum;
+  counts_.fill(0);
+  const FieldColourParams& s = params.sampling;
+  const int row_step = std::max(s.row_step, 1), col_step = std::max(s.col_step, 1);
+  std::uint32_t samples = 0;
+  for (int y = row_step / 2; y < bgr8.rows; y += row_step) {
+    const std::uint8_t* row = bgr8.ptr<std::uint8_t>(y);
+    for (int x = col_step / 2; x < bgr8.cols; x += col_step) {
+      const std::uint8_t* p = row + 3 * x;
+      if (!s.green(p[0], p[1], p[2])) continue;
+      const float sum = float(p[0] + p[1] + p[2]);
+      if (sum < lo || sum > hi) continue;
+      ++counts_[static_cast<std::size_t>(bin(p[2] / sum) * kBins + bin(p[1] / sum))];
+      ++samples;
+    }
+  }
+  if (samples == 0) return;
+  // 3 x 3 box over the bins: a mode a few bins wide reads as one hill, not a comb.
+  std::uint32_t peak = 0;
+  std::size_t peak_at = 0;
+  for (int i = 0; i < kBins; ++i)
+    for (int j = 0; j < kBins; ++j) {
+      std::uint32_t sum = 0;
+      for (int di = -1; di <= 1; ++di)
+        for (int dj = -1; dj <= 1; ++dj) {
+          const int a = i + di, b = j + dj;
+          if (a >= 0 && b >= 0 && a < kBins && b < kBins) sum += counts_[static_cast<std::size_t>(a * kBins + b)];
+        }
+      const auto at = static_cast<std::size_t>(i * kBins + j);
+      smoothed_[at] = sum;
+      if (sum > peak) peak = sum, peak_at = at;
+    }
+  // Grow from the peak over the 8 neighbours of each bin taken (breadth first, a fixed queue),
+  // through bins as saturated as turf.
+  const auto floor = static_cast<std::uint32_t>(params.grow_share * float(peak));
+  const float grey_distance = params.min_saturation * (std::abs(field[0] / field_sum - 1.f / 3) + std::abs(field[1] / field_sum - 1.f / 3));
+  const auto saturated = [&](int i, int j) {
+    const float r = (float(i) + 0.5f) / kBins, g = (float(j) + 0.5f) / kBins;
+    return std::abs(r - 1.f / 3) + std::abs(g - 1.f / 3) >= grey_distance;
+  };
+  turf_.fill(0);
+  std::size_t head = 0, tail = 0;
+  turf_[peak_at] = 2;  // 2: grown; 1 (below): the one-bin rim
+  queue_[tail++] = static_cast<std::uint16_t>(peak_at);
+  while (head < tail) {
+    const int at = queue_[head++], i = at / kBins, j = at % kBins;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj) {
+        const int a = i + di, b = j + dj;
+        if (a < 0 || b < 0 || a >= kBins || b >= kBins) continue;
+        const auto next = static_cast<std::size_t>(a * kBins + b);
+        if (turf_[next] != 0 || smoothed_[next] < std::max<std::uint32_t>(floor, 1) || !saturated(a, b)) continue;
+        turf_[next] = 2;
+        queue_[tail++] = static_cast<std::uint16_t>(next);
+      }
+  }
+  // The rim: every bin beside a grown one.
+  for (int i = 0; i < kBins; ++i)
+    for (int j = 0; j < kBins; ++j) {
+      const auto at = static_cast<std::size_t>(i * kBins + j);
+      if (turf_[at] != 0) continue;
+      bool beside = false;
+      for (int di = -1; di <= 1 && !beside; ++di)
+        for (int dj = -1; dj <= 1 && !beside; ++dj) {
+          const int a = i + di, b = j + dj;
+          beside = a >= 0 && b >= 0 && a < kBins && b < kBins && turf_[static_cast<std::size_t>(a * kBins + b)] == 2;
+        }
+      if (beside) turf_[at] = 1;
+    }
+  for (std::uint8_t& t : turf_) t = t != 0 ? 1 : 0;
+  measured_ = true;
+}
+
+}  // namespace fieldlines
