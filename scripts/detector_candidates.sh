@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Which detector parameters `fieldlines calibrate` should choose: per candidate (smoothing kernel,
 # scan interval, minimum length, gradient threshold), each venue is calibrated with that detector
-# kept (--keep-detector) on its frames without hand-drawn truth, then scored on the frames with
-# one, with the stripes stage off and on (each calibrated so: with it on, the markings are fitted
+# kept (--keep-detector) on each half of its frames, then scored on the other half's frames with
+# hand-drawn truth (venue_common.sh: halves), with the stripes stage off and on (each calibrated so: with it on, the markings are fitted
 # on the stripes, as the command does), beside the candidate's recall ceiling (every segment
 # called a marking). Prints Markdown: marking P / R.
 #   usage: bash scripts/detector_candidates.sh [OUT_DIR] [KERNEL,SCAN,MIN_LENGTH,THRESHOLD ...]
@@ -35,7 +35,7 @@ echo "|---|---|---:|---:|---:|"
 for v in "${venues[@]}"; do
   IFS='|' read -r id pattern title <<<"$v"
   compgen -G "$data/$pattern" >/dev/null || continue
-  fitting_frames "$id" "$pattern"
+  halves "$id" "$pattern"
 done
 for c in "${candidates[@]}"; do
   IFS=, read -r kernel scan length threshold <<<"$c"
@@ -45,12 +45,12 @@ for c in "${candidates[@]}"; do
   everything "$start" "$out/everything.json"
   for v in "${venues[@]}"; do
     IFS='|' read -r id pattern title <<<"$v"
-    [[ -d "$out/$id" ]] || continue
+    [[ -d "$out/$id-fit0" ]] || continue
     cells=()
     for stripes in false true; do
       with "$start" "$out/start-stripes.json" stripes=$stripes
-      fit="$out/$id-$kernel-$scan-$length-$threshold-$stripes.json"
-      if "$bin" calibrate "$out/$id" -o "$fit" --thresholds "$out/start-stripes.json" --keep-detector --quiet 2>/dev/null; then
+      fit="$out/$id-$kernel-$scan-$length-$threshold-$stripes"
+      if calibrate_halves "$id" "$fit" --thresholds "$out/start-stripes.json" --keep-detector; then
         cells+=("$(score "$id" "$fit" | tr '|' '/')")
       else
         cells+=("refused")

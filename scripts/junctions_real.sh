@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # L/T/X junctions on real frames of other leagues, scored against the junctions drawn by eye on
 # the frames with hand-drawn truth (tests/data/hand_truth/junctions.json, which says how).
-# Per venue: the built-in thresholds, and a calibration on the venue's frames without hand-drawn
-# truth (detector parameters and thresholds, as `fieldlines calibrate` chooses them), each with
+# Per venue: the built-in thresholds, and a calibration on each half of the venue's frames
+# (venue_common.sh: halves; detector parameters and thresholds, as `fieldlines calibrate` chooses
+# them) for the frames with truth of the other half, each with
 # the stripes and junctions on and the centre circle off, then on. A detection matches a true
 # junction within 6 px (the synthetic fields' rule) or, in the columns after the bar, within
 # 12 px (the hand-drawn centre lines are a few px off on wide near lines, and the fisheye bends
@@ -25,19 +26,27 @@ junctions_on() {
 echo "| venue | thresholds | circle | true junctions | detected | matched | type correct | false | precision | recall | within 12 px: P / R / type |"
 echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|"
 venue_rows() {
-  scored_paths=(); for image in $scored; do scored_paths+=("$data/$image"); done
-  "$bin" calibrate "$out/$id" -o "$out/$id-cal.json" --quiet 2>"$out/$id-cal.err" || true
+  local k
+  calibrate_halves "$id" "$out/$id-cal" || true
   for which in built-in calibrated; do
-    source_file=assets/default_thresholds.json
-    [[ $which == calibrated ]] && source_file="$out/$id-cal.json"
-    if [[ ! -f $source_file ]]; then echo "| $title | $which | | refused: $(tr '\n' ' ' <"$out/$id-cal.err") | | | | | | | |"; continue; fi
+    if [[ $which == calibrated && ! -f "$out/$id-cal-0.json" || $which == calibrated && ! -f "$out/$id-cal-1.json" ]]; then
+      echo "| $title | $which | | refused: $(cat "$out/$id"-cal-*.err | tr '\n' ' ') | | | | | | | |"; continue
+    fi
     for circle in off on; do
-      junctions_on "$source_file" "$out/$id-$which-$circle.json" "$circle"
-      "$bin" detect --quiet --thresholds "$out/$id-$which-$circle.json" --json "$out/$id-$which-$circle.out.json" "${scored_paths[@]}"
-      python3 - "$out/$id-$which-$circle.out.json" "$title" "$which" "$circle" <<'PY'
+      # The frames with truth of each half detected with the file calibrated on the other half.
+      for k in 0 1; do
+        source_file=assets/default_thresholds.json
+        [[ $which == calibrated ]] && source_file="$out/$id-cal-$k.json"
+        junctions_on "$source_file" "$out/$id-$which-$circle-$k.json" "$circle"
+        mapfile -t images < <(scored_images "$id" "$k")
+        echo '{"images": []}' > "$out/$id-$which-$circle-$k.out.json"
+        [[ ${#images[@]} -eq 0 ]] ||
+          "$bin" detect --quiet --thresholds "$out/$id-$which-$circle-$k.json" --json "$out/$id-$which-$circle-$k.out.json" "${images[@]}"
+      done
+      python3 - "$out/$id-$which-$circle-0.out.json" "$out/$id-$which-$circle-1.out.json" "$title" "$which" "$circle" <<'PY'
 import json, math, os, sys
 truth = {f["image"].split("/")[-1]: f["junctions"] for f in json.load(open("tests/data/hand_truth/junctions.json"))["frames"]}
-images = json.load(open(sys.argv[1]))["images"]
+images = json.load(open(sys.argv[1]))["images"] + json.load(open(sys.argv[2]))["images"]
 def score(images, reach):
     n_true = detected = matched = typed = false = 0
     for im in images:
@@ -59,7 +68,7 @@ def score(images, reach):
     return n_true, detected, matched, typed, false, p, r
 n_true, detected, matched, typed, false, p, r = score(images, 6)
 _, _, m12, t12, _, p12, r12 = score(images, 12)
-print(f"| {sys.argv[2]} | {sys.argv[3]} | {sys.argv[4]} | {n_true} | {detected} | {matched} | {typed} | {false} | {p} | {r} | {p12} / {r12} / {t12} of {m12} |")
+print(f"| {sys.argv[3]} | {sys.argv[4]} | {sys.argv[5]} | {n_true} | {detected} | {matched} | {typed} | {false} | {p} | {r} | {p12} / {r12} / {t12} of {m12} |")
 PY
     done
   done

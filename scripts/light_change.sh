@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Light that changes after calibration: each venue is calibrated on its frames as shot (those
-# without hand-drawn truth), then its hand-truth frames are scored as shot and at a third of
+# Light that changes after calibration: each venue is calibrated on its frames as shot (each half
+# for the other's hand-truth frames, venue_common.sh), then those frames are scored as shot and at a third of
 # the exposure (every frame multiplied by 0.35 with ImageMagick into OUT/dim/data), with the
 # detector's gradient threshold fixed (dark_field 0) and following the frame's field
 # (dark_field = the calibration's reference field brightness, light.hpp). Prints Markdown.
@@ -22,9 +22,9 @@ for folder in msl-samples humanoid-samples elsed-ssl/images; do
     [[ -f $f ]] && convert "$f" -evaluate multiply 0.35 "$dim/$folder/$(basename "$f")"
   done
 done
-# THRESHOLDS MODE OUT: the file with dark_field 0 (fixed) or the reference field's R + G + B.
+# THRESHOLDS OUT MODE: the file with dark_field 0 (fixed) or the reference field's R + G + B.
 with_dark_field() {
-  python3 - "$1" "$2" "$3" <<'PY'
+  python3 - "$1" "$3" "$2" <<'PY'
 import json, sys
 t = json.load(open(sys.argv[1]))
 t["detector"]["dark_field"] = sum(t["light"]["reference_field"]) if sys.argv[2] == "follow" else 0.0
@@ -37,13 +37,13 @@ for v in "${venues[@]}"; do
   IFS='|' read -r id pattern title <<<"$v"
   if ! compgen -G "$shared_data/$pattern" >/dev/null; then echo "| $title | not measured: no $shared_data | | |"; continue; fi
   data="$shared_data"
-  fitting_frames "$id" "$pattern"
-  "$bin" calibrate "$out/$id" -o "$out/$id.json" --quiet
+  halves "$id" "$pattern"
+  calibrate_halves "$id" "$out/$id"
   for mode in fixed follow; do
-    with_dark_field "$out/$id.json" "$mode" "$out/$id-$mode.json"
-    label="fixed"; [[ $mode == follow ]] && label="follows the field (dark_field $(python3 -c "import json; print(round(json.load(open('$out/$id-$mode.json'))['detector']['dark_field']))"))"
-    data="$shared_data"; as_shot=$(score "$id" "$out/$id-$mode.json" | tr '|' '/')
-    data="$dim"; dimmed=$(score "$id" "$out/$id-$mode.json" | tr '|' '/')
+    per_half with_dark_field "$out/$id" "$out/$id-$mode" "$mode"
+    label="fixed"; [[ $mode == follow ]] && label="follows the field (dark_field $(python3 -c "import json; print(round(json.load(open('$out/$id-$mode-0.json'))['detector']['dark_field']))") on the first half)"
+    data="$shared_data"; as_shot=$(score "$id" "$out/$id-$mode" | tr '|' '/')
+    data="$dim"; dimmed=$(score "$id" "$out/$id-$mode" | tr '|' '/')
     echo "| $title | $label | $as_shot | $dimmed |"
   done
 done
