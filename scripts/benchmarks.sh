@@ -201,7 +201,7 @@ for set_id, title, label, folder, options in sets:
                   + (f" Every field feature on (those and the centre circle, which draws the frame a second time) "
                      f"against none: features/fieldlines = {worse(j['features_over_plain'])} (target <= 1.2)."
                      if "features_over_plain" in j else "")
-                  + (f" The coarse pass (coarse_scale 2, the lower half drawn again at half the size) against one "
+                  + (f" The coarse pass (coarse_scale 3, the lower half drawn again at a third of the size, as calibration chooses it) against one "
                      f"scale: coarse/fieldlines = {worse(j['coarse_over_plain'])} (target <= 1.25)."
                      if "coarse_over_plain" in j else ""), ""]
     ours = rows["fieldlines"]

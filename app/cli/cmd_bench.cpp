@@ -35,7 +35,7 @@ our rows may take more with --detector-threads):
   fieldlines+light, fieldlines+stripes, fieldlines+coarse, fieldlines+junctions, fieldlines+features
               the same with the per-frame light adaptation, with the stripes stage (every
               marking checked and measured across its width), with the coarse pass (the lower
-              half drawn again at half the size: coarse_scale 2), with the stripes, field boundary
+              half drawn again at a third of the size: coarse_scale 3), with the stripes, field boundary
               and L/T/X junctions (the features of the detector's own drawing), or with every
               field feature (those and the centre circle, which draws the frame a second time)
   edlines     OpenCV ximgproc EdgeDrawing in EDLines mode (detectEdges + detectLines)
@@ -250,7 +250,7 @@ int cmd_bench(const Args& args) {
   const peers::RatioSummary features = peers::ratio_in_both_orders(row("fieldlines+features"), ours);
   report("features/fieldlines", features, "every field feature on against none; target <= 1.2");
   const peers::RatioSummary coarse = peers::ratio_in_both_orders(row("fieldlines+coarse"), ours);
-  report("coarse/fieldlines", coarse, "the coarse pass (coarse_scale 2) against one scale; target <= 1.25");
+  report("coarse/fieldlines", coarse, "the coarse pass (coarse_scale 3) against one scale; target <= 1.25");
 
   if (json_out) {
     nlohmann::ordered_json j{{"images", images.size()}};

@@ -43,11 +43,12 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
   ours("fieldlines+stripes", "the same with the stripes stage (profiles across every marking)",
        std::make_shared<LineDetector>(striped, thresholds));
 
-  // The coarse pass (DetectorParams::coarse_scale): the lower half drawn again at half the size.
+  // The coarse pass (DetectorParams::coarse_scale) as calibration chooses it where near lines
+  // break up (DetectorCalibrationParams: the lower half drawn again at a third of the size).
   DetectorParams coarse = params;
-  coarse.coarse_scale = 2;
+  coarse.coarse_scale = 3;
   coarse.coarse_from = 0.5;
-  ours("fieldlines+coarse", "the same with the coarse pass (the lower half again at half the size)",
+  ours("fieldlines+coarse", "the same with the coarse pass (the lower half again at a third of the size)",
        std::make_shared<LineDetector>(coarse, thresholds));
 
   // The stripes, the field boundary and the junctions, not the centre circle: the field features

@@ -18,6 +18,7 @@ void TurfColours::measure(const cv::Mat& bgr8, const Rgb& field, const TurfColou
   const FieldColourParams& s = params.sampling;
   const int row_step = std::max(s.row_step, 1), col_step = std::max(s.col_step, 1);
   std::uint32_t samples = 0;
+  int i_lo = kBins, i_hi = -1, j_lo = kBins, j_hi = -1;  // the bins counted lie in this box
   for (int y = row_step / 2; y < bgr8.rows; y += row_step) {
     const std::uint8_t* row = bgr8.ptr<std::uint8_t>(y);
     for (int x = col_step / 2; x < bgr8.cols; x += col_step) {
@@ -25,16 +26,21 @@ void TurfColours::measure(const cv::Mat& bgr8, const Rgb& field, const TurfColou
       if (!s.green(p[0], p[1], p[2])) continue;
       const float sum = float(p[0] + p[1] + p[2]);
       if (sum < lo || sum > hi) continue;
-      ++counts_[static_cast<std::size_t>(bin(p[2] / sum) * kBins + bin(p[1] / sum))];
+      const int i = bin(p[2] / sum), j = bin(p[1] / sum);
+      ++counts_[static_cast<std::size_t>(i * kBins + j)];
       ++samples;
+      i_lo = std::min(i_lo, i), i_hi = std::max(i_hi, i), j_lo = std::min(j_lo, j), j_hi = std::max(j_hi, j);
     }
   }
   if (samples == 0) return;
-  // 3 x 3 box over the bins: a mode a few bins wide reads as one hill, not a comb.
+  // 3 x 3 box over the bins: a mode a few bins wide reads as one hill, not a comb. Only the
+  // counted box and one bin around it can be non-zero (a few hundred bins of the 4,096).
+  const auto clip = [](int v) { return std::clamp(v, 0, kBins - 1); };
+  smoothed_.fill(0);
   std::uint32_t peak = 0;
   std::size_t peak_at = 0;
-  for (int i = 0; i < kBins; ++i)
-    for (int j = 0; j < kBins; ++j) {
+  for (int i = clip(i_lo - 1); i <= clip(i_hi + 1); ++i)
+    for (int j = clip(j_lo - 1); j <= clip(j_hi + 1); ++j) {
       std::uint32_t sum = 0;
       for (int di = -1; di <= 1; ++di)
         for (int dj = -1; dj <= 1; ++dj) {
@@ -69,9 +75,9 @@ void TurfColours::measure(const cv::Mat& bgr8, const Rgb& field, const TurfColou
         queue_[tail++] = static_cast<std::uint16_t>(next);
       }
   }
-  // The rim: every bin beside a grown one.
-  for (int i = 0; i < kBins; ++i)
-    for (int j = 0; j < kBins; ++j) {
+  // The rim: every bin beside a grown one (grown bins lie in the box widened by one).
+  for (int i = clip(i_lo - 2); i <= clip(i_hi + 2); ++i)
+    for (int j = clip(j_lo - 2); j <= clip(j_hi + 2); ++j) {
       const auto at = static_cast<std::size_t>(i * kBins + j);
       if (turf_[at] != 0) continue;
       bool beside = false;
@@ -82,7 +88,11 @@ void TurfColours::measure(const cv::Mat& bgr8, const Rgb& field, const TurfColou
         }
       if (beside) turf_[at] = 1;
     }
-  for (std::uint8_t& t : turf_) t = t != 0 ? 1 : 0;
+  for (int i = clip(i_lo - 2); i <= clip(i_hi + 2); ++i)
+    for (int j = clip(j_lo - 2); j <= clip(j_hi + 2); ++j) {
+      std::uint8_t& t = turf_[static_cast<std::size_t>(i * kBins + j)];
+      t = t != 0 ? 1 : 0;
+    }
   measured_ = true;
 }
 
