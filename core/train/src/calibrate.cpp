@@ -214,7 +214,9 @@ ClassCalibration fit_class(const std::vector<Measured>& rows, const ColourClass&
                   " %): review the proposals in the studio";
   // The class's own shortest few: below them, clutter of the class's colour is all that is left.
   ClassThresholds t;
-  t.max_angle_deg = static_cast<float>(a_cut);
+  // On stripes the robot checks every marking's geometry: the colour test may reach past the
+  // grey spike (the projection floor stays the colour fit's).
+  t.max_angle_deg = static_cast<float>(on_stripes ? std::max(a_cut, theta_a + params.stripe_angle_margin_deg) : a_cut);
   t.min_projection = static_cast<float>(std::exp(m_cut));
   t.min_length = static_cast<float>(percentile(member_length, params.length_percentile));
   out.thresholds = t;
