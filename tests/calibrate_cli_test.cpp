@@ -95,8 +95,13 @@ TEST_F(Calibrate, ImageFoldersAreDetectedThenFittedWithAReport) {
   const auto r = run_cli({"calibrate", set.string(), "-o", out.string(), "--json", report.string()}, dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("marking"), std::string::npos) << r.out;
+  // The detector the frames chose, and why the coarse pass is off on a plain synthetic field.
+  EXPECT_NE(r.out.find("detector: scan interval 2, min length 25, stripes on; one scale (a coarse pass would add"),
+            std::string::npos) << r.out;
   const fl::ThresholdsFile file = fl::load_thresholds_file(out);
   EXPECT_EQ(file.provenance["counts"]["images"], 16);
+  EXPECT_EQ(file.detector.coarse_scale, 1);
+  EXPECT_LT(file.provenance["detector"]["coarse_gain"].get<double>(), 0.2);
   // From pictures of a field: light adaptation and the field boundary gate on for the robot,
   // and both off with --no-light-adaptation for the light alone.
   EXPECT_TRUE(file.thresholds.light.enabled);

@@ -280,6 +280,17 @@ int cmd_calibrate(const Args& args) {
     if (start.light.enabled)
       std::printf("light: %zu frames mapped onto field colour (%.0f, %.0f, %.0f)\n", in.data.frames_with_field(),
                   start.light.reference_field[0], start.light.reference_field[1], start.light.reference_field[2]);
+    if (detector_report.value("calibrated", false)) {
+      // What the frames chose for the detector: the coarse pass says why it is on or off.
+      const double gain = 100 * detector_report.value("coarse_gain", 0.0);
+      std::printf("detector: scan interval %d, min length %d, stripes %s; ", detector.scan_interval,
+                  detector.min_line_length, detector.stripes ? "on" : "off");
+      if (detector.coarse_scale > 1)
+        std::printf("coarse pass 1/%d from %.0f %% of the height (it adds %.0f %% to the stripes)\n", detector.coarse_scale,
+                    100 * detector.coarse_from, gain);
+      else
+        std::printf("one scale (a coarse pass would add %.0f %% to the stripes)\n", gain);
+    }
     show_class("boundary", fit.boundary, thresholds.boundary.thresholds);
     show_class("marking", fit.marking, thresholds.marking.thresholds);
     std::printf("fit in %.1f ms; wrote %s\n", fit_ms, output.c_str());
