@@ -4,10 +4,18 @@
 #include <cmath>
 
 namespace fieldlines {
+namespace {
 
-int TurfColours::bins() const {
-  return measured_ ? static_cast<int>(std::count(turf_.begin(), turf_.end(), std::uint8_t{1})) : 0;
+// Calls f(index) for each of the up to 8 bins beside bin (i, j) and, with `self`, for it too.
+template <int kBins, typename F>
+void each_beside(int i, int j, bool self, F&& f) {
+  for (int a = i - 1; a <= i + 1; ++a)
+    for (int b = j - 1; b <= j + 1; ++b)
+      if (a >= 0 && b >= 0 && a < kBins && b < kBins && (self || a != i || b != j))
+        f(static_cast<std::size_t>(a * kBins + b));
 }
+
+}  // namespace
 
 void TurfColours::measure(const cv::Mat& bgr8, const Rgb& field, const TurfColourParams& params) {
   measured_ = false;
@@ -42,11 +50,7 @@ void TurfColours::measure(const cv::Mat& bgr8, const Rgb& field, const TurfColou
   for (int i = clip(i_lo - 1); i <= clip(i_hi + 1); ++i)
     for (int j = clip(j_lo - 1); j <= clip(j_hi + 1); ++j) {
       std::uint32_t sum = 0;
-      for (int di = -1; di <= 1; ++di)
-        for (int dj = -1; dj <= 1; ++dj) {
-          const int a = i + di, b = j + dj;
-          if (a >= 0 && b >= 0 && a < kBins && b < kBins) sum += counts_[static_cast<std::size_t>(a * kBins + b)];
-        }
+      each_beside<kBins>(i, j, true, [&](std::size_t at) { sum += counts_[at]; });
       const auto at = static_cast<std::size_t>(i * kBins + j);
       smoothed_[at] = sum;
       if (sum > peak) peak = sum, peak_at = at;
@@ -64,16 +68,14 @@ void TurfColours::measure(const cv::Mat& bgr8, const Rgb& field, const TurfColou
   turf_[peak_at] = 2;  // 2: grown; 1 (below): the one-bin rim
   queue_[tail++] = static_cast<std::uint16_t>(peak_at);
   while (head < tail) {
-    const int at = queue_[head++], i = at / kBins, j = at % kBins;
-    for (int di = -1; di <= 1; ++di)
-      for (int dj = -1; dj <= 1; ++dj) {
-        const int a = i + di, b = j + dj;
-        if (a < 0 || b < 0 || a >= kBins || b >= kBins) continue;
-        const auto next = static_cast<std::size_t>(a * kBins + b);
-        if (turf_[next] != 0 || smoothed_[next] < std::max<std::uint32_t>(floor, 1) || !saturated(a, b)) continue;
-        turf_[next] = 2;
-        queue_[tail++] = static_cast<std::uint16_t>(next);
-      }
+    const int at = queue_[head++];
+    each_beside<kBins>(at / kBins, at % kBins, false, [&](std::size_t next) {
+      if (turf_[next] != 0 || smoothed_[next] < std::max<std::uint32_t>(floor, 1) ||
+          !saturated(static_cast<int>(next) / kBins, static_cast<int>(next) % kBins))
+        return;
+      turf_[next] = 2;
+      queue_[tail++] = static_cast<std::uint16_t>(next);
+    });
   }
   // The rim: every bin beside a grown one (grown bins lie in the box widened by one).
   for (int i = clip(i_lo - 2); i <= clip(i_hi + 2); ++i)
@@ -81,11 +83,7 @@ void TurfColours::measure(const cv::Mat& bgr8, const Rgb& field, const TurfColou
       const auto at = static_cast<std::size_t>(i * kBins + j);
       if (turf_[at] != 0) continue;
       bool beside = false;
-      for (int di = -1; di <= 1 && !beside; ++di)
-        for (int dj = -1; dj <= 1 && !beside; ++dj) {
-          const int a = i + di, b = j + dj;
-          beside = a >= 0 && b >= 0 && a < kBins && b < kBins && turf_[static_cast<std::size_t>(a * kBins + b)] == 2;
-        }
+      each_beside<kBins>(i, j, false, [&](std::size_t next) { beside = beside || turf_[next] == 2; });
       if (beside) turf_[at] = 1;
     }
   for (int i = clip(i_lo - 2); i <= clip(i_hi + 2); ++i)

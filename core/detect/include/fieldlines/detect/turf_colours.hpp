@@ -44,8 +44,6 @@ class TurfColours {
     const int i = bin(r), j = bin(g);
     return turf_[static_cast<std::size_t>(i * kBins + j)] != 0;
   }
-  // The share of the chromaticity plane's bins in the turf (for tests and reports).
-  int bins() const;
 
   // 8-bit BGR `bgr8` whose field colour is `field`: measures the model (empty when the frame
   // shows no green sample in that colour's brightness range).
