@@ -10,6 +10,7 @@
 
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/field_green.hpp"
+#include "fieldlines/train/calibrate.hpp"
 #include "fieldlines/train/percentile.hpp"
 
 namespace fieldlines {
@@ -35,7 +36,7 @@ double histogram_percentile(const std::array<std::uint32_t, kMaxGradient + 1>& h
 Thresholds every_segment_a_marking() {
   Thresholds t;
   t.marking.thresholds = {0.f, 90.f, 0.f};
-  t.boundary.thresholds = {1000.f, 0.f, 100000.f};
+  t.boundary.thresholds = disabled_class();
   t.field_boundary_gate = true;
   return t;
 }
@@ -97,9 +98,8 @@ void FieldContrast::add_image(const cv::Mat& bgr) {
   texture_.push_back(histogram_percentile(histogram, n, params_.texture_percentile));
   paint_.push_back(histogram_percentile(histogram, n, params_.paint_percentile));
   if (fine_) {
-    std::vector<Segment> segments;
-    fine_px_ += stripe_px(*fine_, bgr, segments);
-    coarse_px_ += stripe_px(*coarse_, bgr, segments);
+    fine_px_ += stripe_px(*fine_, bgr, segments_);
+    coarse_px_ += stripe_px(*coarse_, bgr, segments_);
   }
 }
 

@@ -31,6 +31,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "fieldlines/detect/detector_params.hpp"
+#include "fieldlines/detect/segment.hpp"
 
 namespace fieldlines {
 
@@ -76,6 +77,7 @@ class FieldContrast {
   std::vector<double> texture_, paint_;
   cv::Mat grey_, smooth_, dx_, dy_;
   std::unique_ptr<LineDetector> fine_, coarse_;  // both set, or neither
+  std::vector<Segment> segments_;                 // their output, reused between frames
   double fine_px_ = 0, coarse_px_ = 0;
 };
 
