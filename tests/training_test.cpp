@@ -369,6 +369,51 @@ TEST(Training, CostWeightedObjective) {
   EXPECT_LE(fl::train(segs, {}, p).thresholds.marking.thresholds.min_length, 30);
 }
 
+// What the detector drops whatever its colours (a marking that is no stripe, a boundary edge
+// off the field boundary) is never predicted that class: the counts are the robot's.
+TEST(FeatureTable, CandidatesGateEachClassAsTheDetectorDoes) {
+  const auto segs = synthetic(400, 7);
+  std::vector<std::uint8_t> may_mark(segs.size()), may_bound(segs.size());
+  for (std::size_t i = 0; i < segs.size(); ++i) may_mark[i] = i % 3 != 0, may_bound[i] = i % 5 != 0;
+  const fl::Thresholds t;
+  const fl::FeatureTable table(segs, t, {may_mark, may_bound});
+  fl::Counts expected;
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    fl::Thresholds own = t;  // the class the segment may not be switched off for it alone
+    if (!may_bound[i]) own.boundary.thresholds.min_length = INFINITY;
+    if (!may_mark[i]) own.marking.thresholds.min_length = INFINITY;
+    fl::tally(expected, segs[i].label, fl::classify(segs[i], own));
+  }
+  EXPECT_EQ(table.count(t.boundary.thresholds, t.marking.thresholds), expected);
+  EXPECT_NE(fl::FeatureTable(segs, t).count(t.boundary.thresholds, t.marking.thresholds), expected);
+  const std::vector<std::uint8_t> short_flags(segs.size() - 1, 1);
+  EXPECT_THROW(fl::FeatureTable(segs, t, {short_flags, {}}), fl::Error);
+  EXPECT_THROW(fl::train(segs, t, fl::TrainParams{}, {}, {}, {{}, short_flags}), fl::Error);
+}
+
+// A short cluster of 5 markings and 4 nones is left out by TP - 1.5 FP; when the detector's
+// stripes check drops the 4 nones anyway, training that knows it admits the cluster.
+TEST(Training, NonesTheDetectorDropsDoNotShrinkTheBox) {
+  std::vector<fl::Segment> segs;
+  std::vector<std::uint8_t> may_mark;
+  fl::Segment marking;
+  marking.grad_y = {-100, -60, -100};
+  for (int i = 0; i < 19; ++i) {
+    marking.saliency = i < 10 ? 200 : 30;
+    marking.label = i < 15 ? fl::Label::Marking : fl::Label::None;
+    segs.push_back(marking);
+    may_mark.push_back(i < 15);
+  }
+  fl::TrainParams p = fl::protocol_spec(fl::Protocol::Ours).train;
+  p.pso.particles = 20, p.pso.iterations = 10;
+  const fl::TrainResult blind = fl::train(segs, {}, p);
+  const fl::TrainResult gated = fl::train(segs, {}, p, {}, {}, {may_mark, {}});
+  EXPECT_GT(blind.thresholds.marking.thresholds.min_length, 30);
+  EXPECT_LE(gated.thresholds.marking.thresholds.min_length, 30);
+  EXPECT_EQ(gated.counts.marking.tp, 15);
+  EXPECT_EQ(gated.counts.marking.fp, 0);
+}
+
 TEST(Metrics, CountsPerClassAndPerImage) {
   fl::LabelledSet set;
   fl::Segment marking;  // white above green on grad_y: passes the default marking thresholds

@@ -391,7 +391,8 @@ std::pair<std::vector<Segment>, std::vector<Segment>> StudioController::labelled
 
 void StudioController::start_training(const TrainParams& params) {
   auto [train_set, test_set] = labelled_by_split();
-  training_.start(std::move(train_set), std::move(test_set), project_.thresholds, params);
+  training_.start(std::move(train_set), std::move(test_set), project_.thresholds, params, labelled_gates(false),
+                  labelled_gates(true));
 }
 
 double StudioController::current_detect_ms() const {

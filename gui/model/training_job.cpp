@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "fieldlines/train/feature_table.hpp"
 #include "fieldlines/train/metrics.hpp"
 #include "gui/model/figures.hpp"
 
@@ -26,12 +27,23 @@ std::string applied_summary(const Counts& counts, std::string_view split) {
          std::string(split) + " split";
 }
 
+namespace {
+
+// The gate's spans where they cover `n` segments; none otherwise (nothing gated).
+LabelledCandidates candidates(const ProposalGate& gate, std::size_t n) {
+  if (!gate.covers(n)) return {};
+  return {gate.may_mark, gate.may_bound};
+}
+
+}  // namespace
+
 void TrainingJob::start(std::vector<Segment> train_set, std::vector<Segment> test_set, const Thresholds& initial,
-                        const TrainParams& params) {
+                        const TrainParams& params, ProposalGate train_gates, ProposalGate test_gates) {
   best_scores_.clear();
   latest_.reset();
-  job_.start([train_set = std::move(train_set), test_set = std::move(test_set), initial, params](
-                 std::stop_token stop, const auto& report) {
+  job_.start([train_set = std::move(train_set), test_set = std::move(test_set), initial, params,
+              train_gates = std::move(train_gates), test_gates = std::move(test_gates)](std::stop_token stop,
+                                                                                          const auto& report) {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
     const auto on_progress = [&](const TrainingProgress& p) {
@@ -48,9 +60,13 @@ void TrainingJob::start(std::vector<Segment> train_set, std::vector<Segment> tes
       report(std::move(snap));
     };
     TrainingResult r;
-    r.run = train(train_set, initial, params, on_progress, stop);
-    r.train_counts = count_labelled(train_set, r.run.thresholds);
-    r.test_counts = count_labelled(test_set, r.run.thresholds);
+    r.run = train(train_set, initial, params, on_progress, stop, candidates(train_gates, train_set.size()));
+    const auto counts = [&](const std::vector<Segment>& set, const ProposalGate& gate) {
+      const ClassThresholds &b = r.run.thresholds.boundary.thresholds, &m = r.run.thresholds.marking.thresholds;
+      return FeatureTable(set, r.run.thresholds, candidates(gate, set.size())).count(b, m);
+    };
+    r.train_counts = counts(train_set, train_gates);
+    r.test_counts = counts(test_set, test_gates);
     return r;
   });
 }

@@ -10,6 +10,7 @@
 
 #include "fieldlines/train/training.hpp"
 #include "gui/model/job.hpp"
+#include "gui/model/proposal_gate.hpp"
 
 namespace fieldlines::studio {
 
@@ -40,8 +41,10 @@ struct TrainingResult {
 class TrainingJob {
  public:
   // Starts training on copies of the data; a running job is cancelled and joined first.
+  // `train_gates` / `test_gates`, parallel to each split (or empty): what the robot's detector
+  // lets each segment be (proposal_gate.hpp); training and both splits' counts then see it.
   void start(std::vector<Segment> train, std::vector<Segment> test, const Thresholds& start,
-             const TrainParams& params);
+             const TrainParams& params, ProposalGate train_gates = {}, ProposalGate test_gates = {});
   // Asks the worker to stop after the current iteration; the outcome is then the best so far.
   void cancel() { job_.cancel(); }
   bool running() const { return job_.running(); }

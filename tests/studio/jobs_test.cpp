@@ -272,6 +272,40 @@ TEST(TrainingJob, NothingLabelledIsAnErrorNotACrash) {
   EXPECT_FALSE(c.apply_training_result());
 }
 
+// The Train tab trains and counts what the robot's detector lets each segment be: nones its
+// stripes check drops are neither false positives nor a reason to shrink the box.
+TEST(TrainingJob, TrainsAndCountsThroughTheDetectorsGates) {
+  std::vector<fieldlines::Segment> segs;
+  fs::ProposalGate gate;
+  fieldlines::Segment s;
+  s.grad_y = {-100, -60, -100};  // a marking's colours
+  for (int i = 0; i < 19; ++i) {
+    s.saliency = i < 10 ? 200 : 30;
+    s.label = i < 15 ? Label::Marking : Label::None;
+    segs.push_back(s);
+    gate.may_mark.push_back(i < 15);
+    gate.may_bound.push_back(1);
+  }
+  fieldlines::TrainParams p = small_training(10);
+  p.objective = fieldlines::parse_objective("tp-fp:1.5");
+  p.polish = true;
+  p.marking_bounds.length = {10, 300};  // the cluster is shorter than the paper's box allows
+  fs::TrainingJob job;
+  job.start(segs, segs, {}, p, gate, gate);
+  job.wait();
+  ASSERT_TRUE(job.outcome().has_value());
+  ASSERT_TRUE(job.outcome()->ok()) << job.outcome()->error();
+  const fs::TrainingResult& r = job.outcome()->value();
+  EXPECT_LE(r.run.thresholds.marking.thresholds.min_length, 30);
+  EXPECT_EQ(r.train_counts.marking.tp, 15);
+  EXPECT_EQ(r.train_counts.marking.fp, 0);
+  EXPECT_EQ(r.test_counts, r.train_counts);
+  job.start(segs, segs, {}, p);  // ungated: the four nones cost the cluster
+  job.wait();
+  ASSERT_TRUE(job.outcome()->ok());
+  EXPECT_GT(job.outcome()->value().run.thresholds.marking.thresholds.min_length, 30);
+}
+
 TEST(TrainingJob, RestartReplacesARunningJob) {
   Labelled data;
   fs::StudioController c(fieldlines::Project::load(data.file), data.file);

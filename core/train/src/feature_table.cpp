@@ -2,19 +2,30 @@
 
 #include <cmath>
 
+#include "fieldlines/detect/error.hpp"
+
 namespace fieldlines {
 
-FeatureTable::FeatureTable(std::span<const Segment> segments, const Thresholds& base) {
-  for (const Segment& s : segments) {
+FeatureTable::FeatureTable(std::span<const Segment> segments, const Thresholds& base,
+                           const LabelledCandidates& candidates) {
+  for (const auto& [flags, what] : {std::pair{candidates.marking, "marking"}, {candidates.boundary, "boundary"}})
+    if (!flags.empty() && flags.size() != segments.size())
+      throw Error(std::string(what) + " candidates: " + std::to_string(flags.size()) + " flags for " +
+                  std::to_string(segments.size()) + " segments");
+  const auto may = [](std::span<const std::uint8_t> flags, std::size_t i) { return flags.empty() || flags[i] != 0; };
+  // A test that can never pass: no projection threshold is below -1e30.
+  constexpr float kNever = -1e30f;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const Segment& s = segments[i];
     if (s.label == Label::Unlabelled) continue;
     const SegmentFeatures f = compute_features(s, base);
     length.push_back(f.length);
-    boundary_proj.push_back(f.boundary.projection);
+    boundary_proj.push_back(may(candidates.boundary, i) ? f.boundary.projection : kNever);
     boundary_angle.push_back(f.boundary.angle_deg);
     for (int k = 0; k < 2; ++k) {
-      // An absent second test can never pass: no projection threshold is below -1e30.
-      const bool present = k < f.marking_count;
-      marking_proj[k].push_back(present ? f.marking[k].projection : -1e30f);
+      // An absent second test, or a segment that may not be a marking, never passes.
+      const bool present = k < f.marking_count && may(candidates.marking, i);
+      marking_proj[k].push_back(present ? f.marking[k].projection : kNever);
       marking_angle[k].push_back(present ? f.marking[k].angle_deg : 1e30f);
     }
     truth.push_back(s.label);

@@ -26,10 +26,6 @@ double test_margin(const ClassFeatures& f, float length, const ClassThresholds& 
   return inside >= 0 ? inside : -std::sqrt(outside);
 }
 
-std::size_t count(std::span<const Segment> s, Label l) {
-  return static_cast<std::size_t>(std::count_if(s.begin(), s.end(), [&](const Segment& x) { return x.label == l; }));
-}
-
 }  // namespace
 
 constexpr EnumNames<ProposalSource, 4> kSourceNames{{{{ProposalSource::LabelFree, "label-free"},
@@ -43,25 +39,29 @@ ProposalThresholds proposal_thresholds(std::span<const Segment> all, std::span<c
   return proposal_thresholds(calibrate(all, start), labelled, start, params, stop);
 }
 
-ProposalThresholds proposal_thresholds(const Calibration& fit, std::span<const Segment> all_labelled,
+ProposalThresholds proposal_thresholds(const Calibration& fit, std::span<const Segment> labelled,
                                        const Thresholds& start, const ProposalParams& params, std::stop_token stop,
                                        const LabelledCandidates& candidates) {
   ProposalThresholds out;
   out.thresholds = start;
-  std::vector<Segment> kept;
+  // Only the spans parallel to the labels gate (feature_table.hpp: LabelledCandidates).
+  const auto parallel = [&](std::span<const std::uint8_t> may) {
+    return may.size() == labelled.size() ? may : std::span<const std::uint8_t>{};
+  };
+  const LabelledCandidates gates{parallel(candidates.marking), parallel(candidates.boundary)};
   for (const TrainClass cls : {TrainClass::Boundary, TrainClass::Marking}) {
     const bool boundary = cls == TrainClass::Boundary;
     const Label own = boundary ? Label::Boundary : Label::Marking;
-    const std::span<const std::uint8_t> may = boundary ? candidates.boundary : candidates.marking;
-    std::span<const Segment> labelled = all_labelled;
-    if (may.size() == all_labelled.size() && !may.empty()) {
-      kept.clear();
-      for (std::size_t i = 0; i < all_labelled.size(); ++i)
-        if (may[i] || all_labelled[i].label == own) kept.push_back(all_labelled[i]);
-      labelled = kept;
+    const std::span<const std::uint8_t> may = boundary ? gates.boundary : gates.marking;
+    // A label counts towards training the class when the detector may call its segment that
+    // class, or when it is one: a none the detector drops anyway says nothing about the box.
+    std::size_t labels = 0, positives = 0;
+    for (std::size_t i = 0; i < labelled.size(); ++i) {
+      if (labelled[i].label == Label::Unlabelled) continue;
+      const bool is_own = labelled[i].label == own;
+      positives += is_own;
+      labels += is_own || may.empty() || may[i] != 0;
     }
-    const std::size_t labels = labelled.size();
-    const std::size_t positives = count(labelled, own);
     ProposalSource& source = boundary ? out.boundary : out.marking;
     ClassThresholds& target = boundary ? out.thresholds.boundary.thresholds : out.thresholds.marking.thresholds;
     if (target == disabled_class()) {  // switched off: never proposed
@@ -73,7 +73,7 @@ ProposalThresholds proposal_thresholds(const Calibration& fit, std::span<const S
     if (positives >= enough && labels - positives >= enough) {
       TrainParams p = params.train;
       p.target = cls;
-      const TrainResult r = train(labelled, out.thresholds, p, {}, stop);
+      const TrainResult r = train(labelled, out.thresholds, p, {}, stop, gates);
       if (!r.cancelled) {
         target = boundary ? r.thresholds.boundary.thresholds : r.thresholds.marking.thresholds;
         source = ProposalSource::Trained;

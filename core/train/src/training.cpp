@@ -327,12 +327,13 @@ void validate(const ThresholdBounds& b) {
 }
 
 TrainResult train(std::span<const Segment> labelled, const Thresholds& start, const TrainParams& params,
-                  const TrainingCallback& on_progress, std::stop_token stop) {
+                  const TrainingCallback& on_progress, std::stop_token stop,
+                  const LabelledCandidates& candidates) {
   validate(params.pso);
   validate(params.marking_bounds);
   validate(params.boundary_bounds);
   if (params.threads < 1 || params.threads > 256) throw Error("threads must be in 1..256");
-  const FeatureTable full(labelled, start);
+  const FeatureTable full(labelled, start, candidates);
   if (full.size() == 0) throw Error("no labelled segments to train on");
   // Marking only: rows the fixed boundary thresholds claim can never become markings, so they
   // are dropped from the hot loop and the boundary test is switched off inside it.

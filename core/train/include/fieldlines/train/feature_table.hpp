@@ -10,11 +10,20 @@
 
 namespace fieldlines {
 
+// Per segment, parallel to the segments given (each empty: every one may): may the robot's
+// detector call it a marking, a boundary edge, whatever its colours (its stripes check, its
+// field boundary gate)? A segment it may not be is never predicted that class: training then
+// scores what the robot will do, and a none the detector drops anyway does not shrink the box.
+struct LabelledCandidates {
+  std::span<const std::uint8_t> marking, boundary;
+};
+
 class FeatureTable {
  public:
   // `segments[i].label` is the human label (Unlabelled rows are skipped). The colour classes,
   // gradient mode and pi convention of `base` fix the features; its thresholds are not used.
-  FeatureTable(std::span<const Segment> segments, const Thresholds& base);
+  // Throws fieldlines::Error when a non-empty candidates span is not parallel to `segments`.
+  FeatureTable(std::span<const Segment> segments, const Thresholds& base, const LabelledCandidates& candidates = {});
   FeatureTable() = default;
 
   std::size_t size() const { return length.size(); }

@@ -39,14 +39,6 @@ struct ProposalParams {
   TrainParams train;  // target is set per class
 };
 
-// Per labelled segment, parallel to `labelled` (empty: every one): may the detector call it a
-// marking, a boundary edge (its stripes check and field boundary gate)? Each class is trained on
-// its candidates and its own labels alone: a segment the detector drops anyway says nothing
-// about where the class's colour box should end, and as a none inside it would shrink the box.
-struct LabelledCandidates {
-  std::span<const std::uint8_t> marking, boundary;
-};
-
 // `all`: every segment of the project (labels ignored); `labelled`: the human labels so far.
 // `fit`: calibrate(all, start), for callers that propose from several label sets over the same
 // segments (calibration never reads labels, so one fit serves them all).

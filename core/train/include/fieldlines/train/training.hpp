@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "fieldlines/detect/classifier.hpp"
+#include "fieldlines/train/feature_table.hpp"
 #include "fieldlines/train/metrics.hpp"
 #include "fieldlines/train/pso.hpp"
 
@@ -95,8 +96,11 @@ struct TrainResult {
 
 // `labelled[i].label` is the human label; Unlabelled segments are ignored. `start` gives the
 // colour classes, gradient mode and the thresholds of the class that is not trained.
+// `candidates` (feature_table.hpp), parallel to `labelled`: what the detector's stripes check
+// and field boundary gate let each segment be; the counts and the score are then the robot's.
 // Throws fieldlines::Error on bad parameters or when there is nothing labelled.
 TrainResult train(std::span<const Segment> labelled, const Thresholds& start, const TrainParams& params,
-                  const TrainingCallback& on_progress = {}, std::stop_token stop = {});
+                  const TrainingCallback& on_progress = {}, std::stop_token stop = {},
+                  const LabelledCandidates& candidates = {});
 
 }  // namespace fieldlines
