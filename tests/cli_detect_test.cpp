@@ -220,6 +220,24 @@ TEST_F(CliDetect, CameraFileFitsTheCircleOnTheTurfAsTheLibrary) {
   ASSERT_EQ(ellipses.size(), 1u);
   EXPECT_FLOAT_EQ(ellipses[0].at("cy").get<float>(), detector.features().ellipses[0].cy);
   EXPECT_GT(ellipses[0].at("cy").get<float>(), 480.f) << "its centre lies below the frame";
+  // On the ground (soccer_vision_3d_msgs names): the circle where it was painted, its diameter
+  // the rules', every point with its covariance.
+  const json ground = read_json(out)["images"][0].at("ground");
+  ASSERT_EQ(ground.at("ellipses").size(), 1u);
+  const json& circle = ground["ellipses"][0];
+  EXPECT_NEAR(circle.at("center").at("position").at("x").get<double>(), 0.8, 0.05);
+  EXPECT_NEAR(circle["center"]["position"].at("y").get<double>(), 0.0, 0.05);
+  EXPECT_NEAR(circle.at("diameter").get<double>(), 1.5, 0.05);
+  EXPECT_EQ(circle.at("center_covariance").size(), 3u);
+  EXPECT_GT(circle["center_covariance"][0].get<double>(), 0);
+  for (const json& s : ground.at("segments")) {
+    EXPECT_EQ(s.at("start").at("z").get<double>(), 0.0);
+    EXPECT_GT(s["start"].at("x").get<double>(), 0) << "in front of the camera";
+  }
+  EXPECT_TRUE(ground.at("field_boundary").contains("points"));
+  const CliRun plain = run({"detect", "--features", "--json", out.string(), path.string()});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_FALSE(read_json(out)["images"][0].contains("ground")) << "no camera, no ground";
 
   json bad = fieldlines::to_json(camera);
   bad["height_m"] = -1;

@@ -280,8 +280,9 @@ TEST(DetectAllocations, NoneWithTheCoarsePass) {
   expect_warm_detect_allocates_nothing(frames, names, every);
 }
 
-// With the camera known the centre circle is also fitted on the turf (ground_circle.hpp); the
-// camera is set per frame, as a walking robot's pose changes: still nothing.
+// With the camera known the centre circle is also fitted on the turf (ground_circle.hpp) and
+// every feature is projected onto it (ground_features.hpp); the camera is set per frame, as a
+// walking robot's pose changes: still nothing.
 TEST(DetectAllocations, NoneWithTheCameraSetPerFrame) {
   synth::SynthParams params;
   params.field.scene = synth::Scene::Kid;
@@ -289,14 +290,17 @@ TEST(DetectAllocations, NoneWithTheCameraSetPerFrame) {
   for (const int index : {1, 5, 15, 22}) samples.push_back(synth::generate(params, 4242, index));
   LineDetector detector(all_features());
   std::vector<Segment> out;
-  std::size_t ellipses = 0;
+  std::size_t ellipses = 0, on_ground = 0;
   for (int pass = 0; pass < 2; ++pass)
     for (const synth::SynthSample& s : samples) {
       detector.set_camera(synth::to_ground_camera(s.truth.intrinsics, s.truth.pose));
       detector.detect(s.bgr, out);
       ellipses += detector.features().ellipses.size();
+      const GroundFeatures& g = detector.ground_features();
+      on_ground += g.segments.size() + g.intersections.size() + g.ellipses.size() + g.field_boundary.size();
     }
   EXPECT_GT(ellipses, 0u) << "the frames must exercise the fit on the turf";
+  EXPECT_GT(on_ground, 0u) << "the frames must exercise the ground features";
   for (const synth::SynthSample& s : samples) {
     const GroundCamera camera = synth::to_ground_camera(s.truth.intrinsics, s.truth.pose);
     EXPECT_EQ(allocations_in([&] {

@@ -63,7 +63,9 @@ options:
   --camera FILE     a fixed camera over the field (a camera file: intrinsics, pitch, roll and
                     height; docs/detector.md): the centre circle is also fitted on the turf as
                     a circle of the thresholds file's centre_circle_radius, which finds one the
-                    frame shows a single arc of
+                    frame shows a single arc of; --json adds each image's features on the ground
+                    ("ground": metres from the camera's foot, soccer_vision_3d_msgs names, each
+                    point's covariance from 1 degree of pitch and roll noise)
   --threads N       images processed in parallel, one detector per thread (default 1);
                     outputs keep the input order
   --quiet           no per-image lines on stdout, no progress on stderr
@@ -244,6 +246,7 @@ int cmd_detect(const Args& args) {
       d.markings = features.markings;
       d.intersections = features.intersections;
       d.ellipses = features.ellipses;
+      if (opt.camera) d.ground = detector.ground_features();
       if (opt.draw) {
         std::vector<unsigned char> png;
         OverlayParams look;

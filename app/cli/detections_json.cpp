@@ -58,7 +58,7 @@ nlohmann::ordered_json to_json(const ImageDetections& image) {
     ellipses.push_back({{"cx", finite_or_zero(e.cx)}, {"cy", finite_or_zero(e.cy)}, {"width", finite_or_zero(e.width)},
                         {"height", finite_or_zero(e.height)}, {"angle_deg", finite_or_zero(e.angle_deg)},
                         {"confidence", finite_or_zero(e.confidence)}});
-  return {{"image", image.path.filename().string()},
+  nlohmann::ordered_json out{{"image", image.path.filename().string()},
           {"path", image.path.string()},
           {"width", image.width},
           {"height", image.height},
@@ -68,6 +68,8 @@ nlohmann::ordered_json to_json(const ImageDetections& image) {
           {"markings", std::move(markings)},
           {"intersections", std::move(intersections)},
           {"ellipses", std::move(ellipses)}};
+  if (image.ground) out["ground"] = to_json(*image.ground);
+  return out;
 }
 
 nlohmann::ordered_json detections_json(std::span<const ImageDetections> images, std::span<const FailedImage> failed) {

@@ -24,6 +24,7 @@
 #include "arrays.hpp"
 #include "fieldlines/data/image_io.hpp"
 #include "fieldlines/detect/camera_file.hpp"
+#include "fieldlines/detect/ground_features_json.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
@@ -110,6 +111,14 @@ class Detector {
     for (const FieldBoundary::Point& p : f.field_boundary.points) boundary.append(py::make_tuple(p.x, p.y));
     return py::dict(py::arg("markings") = markings, py::arg("intersections") = intersections,
                     py::arg("ellipses") = ellipses, py::arg("field_boundary") = boundary);
+  }
+
+  // The features of the last detect() on the ground, as `fieldlines detect --json` writes an
+  // image's "ground" (ground_features_json.hpp); None without a camera.
+  py::object ground_features() {
+    const auto lock = lock_without_gil(mutex_);
+    if (!camera_) return py::none();
+    return to_python(nlohmann::json(to_json(detector_.ground_features())));
   }
 
   py::array detect(const py::array& image) {
@@ -318,6 +327,15 @@ A C-contiguous image (or a crop of one) is read without a copy; the GIL is relea
 +x, pi/2 image down), confidence}], "ellipses": [{cx, cy, width, height, angle_deg, confidence}],
 "field_boundary": [(x, y), ...]}. Each is empty unless its stage is on in the thresholds'
 "detector" (stripes, intersections, centre_circle; the boundary with any of them).)")
+      .def("ground_features", &Detector::ground_features,
+           R"(The field features of the last detect() on the ground when a camera is set (None
+otherwise), as `fieldlines detect --camera --json` writes an image's "ground", in ros-sports
+soccer_vision_3d_msgs names: metres from the camera's foot (x ahead, y left, z up), {"segments":
+[{start, end ({x, y, z}), width, start_covariance, end_covariance ([xx, xy, yy], m^2)}],
+"intersections": [{center, center_covariance, type, num_rays, rays ([{x, y, z}] unit ground
+directions), confidence}], "ellipses": [{center {position, orientation}, diameter,
+center_covariance, confidence}], "field_boundary": {points, covariances}}. Points at or above
+the horizon are never projected.)")
       .def_property("thresholds", &Detector::thresholds, &Detector::set_thresholds,
                     "The detector's thresholds file as a dict; assign a dict to change it.")
       .def_property("camera", &Detector::camera, &Detector::set_camera,

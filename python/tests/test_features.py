@@ -86,6 +86,13 @@ def test_the_camera_fits_the_circle_on_the_turf():
     ellipses = detector.features()["ellipses"]
     assert len(ellipses) == 1, ellipses
     assert ellipses[0]["cy"] > 480, "its centre lies below the frame"
+    # On the ground: where it was painted, as `detect --camera --json` writes it.
+    ground = detector.ground_features()
+    assert len(ground["ellipses"]) == 1, ground
+    centre = ground["ellipses"][0]["center"]["position"]
+    assert abs(centre["x"] - 0.8) < 0.05 and abs(centre["y"]) < 0.05, centre
+    assert abs(ground["ellipses"][0]["diameter"] - 1.5) < 0.05
+    assert all(s["start"]["x"] > 0 for s in ground["segments"])
     # The camera survives a change of thresholds, and None removes it.
     thresholds = detector.thresholds
     thresholds["detector"]["piece_length"] = 12
@@ -93,6 +100,7 @@ def test_the_camera_fits_the_circle_on_the_turf():
     assert detector.camera == CAMERA
     detector.camera = None
     assert detector.camera is None
+    assert detector.ground_features() is None
 
 
 def test_a_bad_camera_is_refused_and_the_old_one_kept():

@@ -41,6 +41,7 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   StripeWorkspace unpieced_stripes;
   std::vector<Marking> unpieced_lines;  // those of them that are stripes
   CircleWorkspace circle;
+  GroundFeatures ground;  // `features` through the camera, when one is set
 };
 
 namespace {
@@ -179,6 +180,7 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   out.clear();
   impl_->field.reset();
   impl_->features.clear();
+  impl_->ground.clear();
   const cv::Mat* bgr = normalise(image);
   if (!bgr) return;
   const bool pieces = params_.intersections || params_.centre_circle;
@@ -203,6 +205,7 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   label(out, gain, thresholds_, f.field_boundary);
   if (stripes) find_stripes(*bgr, colours, out, params_, impl_->stripes, f.markings);
   if (pieces) find_pieces(*bgr, gain, out);
+  if (camera_) project_features(f, *camera_, ground_params_, impl_->ground);
 }
 
 // The coarse pass: the band from coarse_from down, cropped to whole cells of coarse_scale px and
@@ -326,6 +329,11 @@ FieldColours LineDetector::stripe_colours() const {
   return {impl_->field, params_.stripe_turf_colours ? &impl_->turf : nullptr};
 }
 const FieldFeatures& LineDetector::features() const { return impl_->features; }
+const GroundFeatures& LineDetector::ground_features() const { return impl_->ground; }
+void LineDetector::set_ground_params(const GroundFeatureParams& params) {
+  validate(params);
+  ground_params_ = params;
+}
 
 LineDetector::GradientViews LineDetector::compute_gradients(const cv::Mat& image) {
   const cv::Mat* bgr = normalise(image);

@@ -18,6 +18,7 @@
 #include "fieldlines/detect/field_boundary.hpp"
 #include "fieldlines/detect/field_features.hpp"
 #include "fieldlines/detect/ground_camera.hpp"
+#include "fieldlines/detect/ground_features.hpp"
 #include "fieldlines/detect/segment.hpp"
 #include "fieldlines/detect/turf_colours.hpp"
 
@@ -75,6 +76,13 @@ class LineDetector {
   // fails validate().
   void set_camera(const std::optional<GroundCamera>& camera);
   const std::optional<GroundCamera>& camera() const { return camera_; }
+  // The field features of the last detect() on the ground (ground_features.hpp), in metres,
+  // when a camera is set; empty otherwise.
+  const GroundFeatures& ground_features() const;
+  // How the ground features weigh the camera's angle noise and how far they reach. Throws
+  // fieldlines::Error when they fail validate().
+  void set_ground_params(const GroundFeatureParams& params);
+  const GroundFeatureParams& ground_params() const { return ground_params_; }
 
  private:
   struct Impl;
@@ -87,6 +95,7 @@ class LineDetector {
   Thresholds thresholds_;
   bool find_boundary_ = false;
   std::optional<GroundCamera> camera_;
+  GroundFeatureParams ground_params_;
   std::unique_ptr<Impl> impl_;
 };
 
