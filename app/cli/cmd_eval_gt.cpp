@@ -21,6 +21,7 @@
 #include "fieldlines/synth/camera.hpp"
 #include "fieldlines/synth/feature_truth.hpp"
 #include "fieldlines/synth/field.hpp"
+#include "fieldlines/synth/ground_score.hpp"
 #include "fieldlines/synth/gt_eval.hpp"
 #include "fieldlines/synth/hand_truth.hpp"
 #include "fieldlines/data/image_io.hpp"
@@ -67,7 +68,9 @@ options:
                      stripes' centre lines within half the line's width + 1 px of a line's centre)
   --truth-camera     give the detector each frame's camera from its truth (intrinsics, pitch,
                      roll, height: what a robot's kinematics know) and its field's centre circle
-                     radius, so the circle is also fitted on the turf (--gt only)
+                     radius, so the circle is also fitted on the turf (--gt only); with
+                     --features a third table scores the features on the ground: each matched
+                     junction's error over its true distance, the circle's centre error within 4 m
   --camera-error DEG,FRAC
                      with --truth-camera: the camera given is off, its pitch and roll each by up
                      to DEG degrees and its height by up to FRAC of it (uniform, drawn per frame
@@ -114,6 +117,7 @@ HandBoundary score_hand_boundary(const std::vector<float>& truth_rows, const Fie
 struct Group {
   GtScore score;
   synth::FeatureScore features;
+  synth::GroundScore ground;  // with --truth-camera and the features
   HandBoundary hand_boundary;
   double detect_ms = 0;
 };
@@ -160,6 +164,28 @@ void print_feature_row(bool markdown, const std::string& scene, const std::strin
   }
 }
 
+// The features on the ground against the truth (ground_score.hpp): junctions' error as a share of
+// their distance, the circle's centre error within 4 m.
+void print_ground_row(bool markdown, const std::string& scene, const std::string& condition, const Group& g) {
+  const synth::GroundScore& s = g.ground;
+  const auto within = [](const std::vector<double>& v, double limit) {
+    return double(std::count_if(v.begin(), v.end(), [&](double e) { return e <= limit; })) / double(v.size());
+  };
+  const bool j = !s.junction_error_share.empty(), c = !s.circle_error_m.empty();
+  const std::string jm = fmt(j ? 100 * median(s.junction_error_share) : 0, j),
+                    j90 = fmt(j ? 100 * percentile(s.junction_error_share, 90) : 0, j),
+                    j5 = fmt(j ? within(s.junction_error_share, 0.05) : 0, j),
+                    jd = fmt(j ? median(s.junction_distance_m) : 0, j),
+                    cm = fmt(c ? 100 * median(s.circle_error_m) : 0, c), c10 = fmt(c ? within(s.circle_error_m, 0.1) : 0, c);
+  const long matched = static_cast<long>(s.junction_error_share.size()), found = static_cast<long>(s.circle_error_m.size());
+  if (markdown)
+    std::printf("| %s | %s | %ld | %s | %s | %s | %s | %ld/%ld | %s | %s |\n", scene.c_str(), condition.c_str(), matched,
+                jd.c_str(), jm.c_str(), j90.c_str(), j5.c_str(), found, s.near_circles, cm.c_str(), c10.c_str());
+  else
+    std::printf("%-12s %-11s %8ld %8s %9s %9s %8s %5ld/%-5ld %9s %8s\n", scene.c_str(), condition.c_str(), matched,
+                jd.c_str(), jm.c_str(), j90.c_str(), j5.c_str(), found, s.near_circles, cm.c_str(), c10.c_str());
+}
+
 // Columns within the feature score's boundary tolerance (4 px), as the synthetic fields count them.
 long within_boundary_px(const HandBoundary& b) {
   const float px = synth::FeatureScoreParams{}.max_boundary_px;
@@ -199,6 +225,11 @@ nlohmann::json to_json(const Group& g) {
                               {"share", g.features.boundary_share()}}},
           {"markings", {{"px", g.features.marking_px}, {"on_line_px", g.features.marking_on_line_px},
                         {"share", g.features.marking_share()}}},
+          {"ground", {{"junctions_matched", g.ground.junction_error_share.size()},
+                      {"junction_error_median_share", median(g.ground.junction_error_share)},
+                      {"circles_within_reach", g.ground.near_circles},
+                      {"circles_found_on_ground", g.ground.circle_error_m.size()},
+                      {"circle_centre_error_median_m", median(g.ground.circle_error_m)}}},
           {"hand_field_boundary", {{"columns", g.hand_boundary.errors_px.size()},
                                    {"within_2pct_height", g.hand_boundary.within_share},
                                    {"within_4px", within_boundary_px(g.hand_boundary)},
@@ -339,16 +370,22 @@ int cmd_eval_gt(const Args& args) {
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       const GtScore score = GtEdges(item.truth, match).score(segments);
       synth::FeatureScore feature_score;
+      synth::GroundScore ground_score;
       if (features) {
         // Without its mask (not written, unreadable) every column showing carpet counts.
         const cv::Mat mask = cv::imread(item.mask.string(), cv::IMREAD_UNCHANGED);
         const auto ft = synth::feature_truth(item.truth, mask, match.min_width_px);
         feature_score = synth::score_features(item.truth, ft, detector.features());
+        if (truth_camera)
+          ground_score = synth::score_ground(ft, detector.features(), detector.ground_features(), *detector.camera(),
+                                             synth::to_ground_camera(item.truth.intrinsics, item.truth.pose));
       }
       const HandBoundary hand_boundary = score_hand_boundary(item.boundary_rows, detector.field_boundary(), img.rows);
       Group& g = groups[{item.row, item.condition}];
-      g.score += score, g.features += feature_score, g.hand_boundary += hand_boundary, g.detect_ms += ms;
-      total.score += score, total.features += feature_score, total.hand_boundary += hand_boundary, total.detect_ms += ms;
+      for (Group* to : {&g, &total}) {
+        to->score += score, to->features += feature_score, to->ground += ground_score;
+        to->hand_boundary += hand_boundary, to->detect_ms += ms;
+      }
     } catch (const Error& e) {
       std::fprintf(stderr, "fieldlines eval: %s\n", e.what());
       ++failed;
@@ -383,6 +420,18 @@ int cmd_eval_gt(const Args& args) {
     }
     for (const auto& [key, g] : groups) print_feature_row(markdown, key.first, key.second, g);
     print_feature_row(markdown, "all", "all", total);
+  }
+  if (features && truth_camera) {
+    std::printf("\n");
+    if (markdown)
+      std::printf("| scene | condition | junctions matched | their median distance m | ground error median %% | "
+                  "90th percentile %% | within 5 %% | circles within 4 m found | centre error median cm | within 10 cm |\n"
+                  "|---|---|---|---|---|---|---|---|---|---|\n");
+    else
+      std::printf("%-12s %-11s %8s %8s %9s %9s %8s %11s %9s %8s\n", "scene", "condition", "J match", "J dist m",
+                  "J err %", "J p90 %", "J 5 %", "circles", "C err cm", "C 10cm");
+    for (const auto& [key, g] : groups) print_ground_row(markdown, key.first, key.second, g);
+    print_ground_row(markdown, "all", "all", total);
   }
   if (hand) {
     std::printf("\n");

@@ -205,18 +205,8 @@ FeatureScore score_features(const GroundTruth& frame, const FeatureTruth& truth,
   return s;
 }
 
-FeatureScore score_features(const FeatureTruth& truth, const FieldFeatures& detected, const FeatureScoreParams& params) {
-  FeatureScore s;
-  const FieldBoundary& boundary = detected.field_boundary;
-  for (std::size_t u = 0; u < truth.carpet_top.size(); ++u) {
-    if (truth.carpet_top[u] < 0) continue;
-    ++s.boundary_columns;
-    s.boundary_right += !boundary.empty() &&
-                        std::abs(boundary.y_at(float(u)) - truth.carpet_top[u]) <= params.max_boundary_px;
-  }
-  s.detected = static_cast<long>(detected.intersections.size());
-  s.truth = static_cast<long>(truth.intersections.size());
-  // Every (detected, true) pair within reach, nearest first; each side used once.
+std::vector<std::pair<std::size_t, std::size_t>> matched_junctions(const FeatureTruth& truth, const FieldFeatures& detected,
+                                                                   const FeatureScoreParams& params) {
   struct Pair {
     double d;
     std::size_t det, tru;
@@ -230,11 +220,31 @@ FeatureScore score_features(const FeatureTruth& truth, const FieldFeatures& dete
     }
   std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.d < y.d; });
   std::vector<char> det_used(detected.intersections.size()), tru_used(truth.intersections.size());
+  std::vector<std::pair<std::size_t, std::size_t>> out;
   for (const Pair& p : pairs) {
     if (det_used[p.det] || tru_used[p.tru]) continue;
     det_used[p.det] = tru_used[p.tru] = 1;
+    out.emplace_back(p.det, p.tru);
+  }
+  return out;
+}
+
+FeatureScore score_features(const FeatureTruth& truth, const FieldFeatures& detected, const FeatureScoreParams& params) {
+  FeatureScore s;
+  const FieldBoundary& boundary = detected.field_boundary;
+  for (std::size_t u = 0; u < truth.carpet_top.size(); ++u) {
+    if (truth.carpet_top[u] < 0) continue;
+    ++s.boundary_columns;
+    s.boundary_right += !boundary.empty() &&
+                        std::abs(boundary.y_at(float(u)) - truth.carpet_top[u]) <= params.max_boundary_px;
+  }
+  s.detected = static_cast<long>(detected.intersections.size());
+  s.truth = static_cast<long>(truth.intersections.size());
+  std::vector<char> det_used(detected.intersections.size());
+  for (const auto& [det, tru] : matched_junctions(truth, detected, params)) {
+    det_used[det] = 1;
     ++s.matched;
-    s.type_correct += detected.intersections[p.det].type == truth.intersections[p.tru].type;
+    s.type_correct += detected.intersections[det].type == truth.intersections[tru].type;
   }
   for (std::size_t a = 0; a < detected.intersections.size(); ++a) {
     if (det_used[a]) continue;

@@ -31,6 +31,7 @@
 #include <array>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <opencv2/core/mat.hpp>
@@ -86,8 +87,13 @@ struct FeatureScore {
   FeatureScore& operator+=(const FeatureScore& o);
 };
 
+// Detected and true junctions paired (indices into detected.intersections, truth.intersections):
+// every pair within max_distance_px, nearest first, each side used once.
+std::vector<std::pair<std::size_t, std::size_t>> matched_junctions(const FeatureTruth& truth, const FieldFeatures& detected,
+                                                                   const FeatureScoreParams& params = {});
+
 // The circle's "radius" in the image is the geometric mean of the ellipse's semi-axes. Junctions
-// match greedily, nearest first.
+// match as matched_junctions() pairs them.
 // The boundary counts on every column showing carpet: a detector that was not asked for it
 // scores 0 there.
 FeatureScore score_features(const FeatureTruth& truth, const FieldFeatures& detected,
