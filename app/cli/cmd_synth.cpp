@@ -35,7 +35,8 @@ options:
   --no-effects         no vignetting, blur, noise or JPEG (clean renders)
   --height LO:HI       camera height above the carpet in metres (SSL 0.12:0.30, Kid 0.40:0.90)
   --pitch LO:HI        camera pitch below the horizon in degrees (SSL 2:22, Kid 10:45)
-  --roll MAX           largest |roll| in degrees (SSL 4, Kid 6)
+  --roll MAX|LO:HI     largest |roll| in degrees (SSL 4, Kid 6), or the range it is drawn from
+  --fx LO:HI           focal length in pixels, fy = fx (default 600:680)
   -o, --output DIR     output folder (created if needed; required)
   --demo               make the built-in demo project if it is missing (30 SSL frames, all
                        conditions, 10 labelled) in DIR or the user's data folder
@@ -48,6 +49,7 @@ examples:
   fieldlines synth --scene ssl --n 20 --seed 1 -o synth/ssl_train
   fieldlines synth --scene kid --condition all --line-width 0.06 --n 50 --seed 2 -o synth/kid
   fieldlines synth --scene ssl --height 0.4:0.6 --pitch 15:30 --n 20 --seed 3 -o synth/high_cam
+  fieldlines synth --scene kid --height 0.6:0.6 --pitch 25:25 --roll 2:2 --fx 640:640 --n 10 --seed 4 -o synth/one_camera
 )";
 
 std::vector<synth::Condition> parse_conditions(const std::string& text) {
@@ -72,7 +74,7 @@ std::vector<synth::Condition> parse_conditions(const std::string& text) {
 int cmd_synth(const Args& args) {
   const auto parsed = parse_or_print_help(args,
                      {"--scene", "--condition", "--line-width", "--n", "--seed", "--first", "-o", "--output",
-                      "--height", "--pitch", "--roll"},
+                      "--height", "--pitch", "--roll", "--fx"},
                      {"--no-effects", "--demo", "--quiet"}, kHelp);
   if (!parsed) return 0;
   const ParsedArgs& a = *parsed;
@@ -93,11 +95,15 @@ int cmd_synth(const Args& args) {
   p.field.line_width = a.double_or("--line-width", 0, 0.001, 0.3);
   p.conditions = parse_conditions(a.value_or("--condition", "artificial"));
   p.camera_effects = !a.flag("--no-effects");
-  if (a.has("--height") || a.has("--pitch") || a.has("--roll")) {
+  if (a.has("--height") || a.has("--pitch") || a.has("--roll") || a.has("--fx")) {
     synth::CameraRanges c = synth::default_camera_ranges(p.field.scene);
     if (const auto v = a.value("--height")) std::tie(c.height_min, c.height_max) = parse_interval(*v, "--height", 0.02, 5);
     if (const auto v = a.value("--pitch")) std::tie(c.pitch_min, c.pitch_max) = parse_interval(*v, "--pitch", -30, 89);
-    if (a.has("--roll")) c.roll_max = a.double_or("--roll", c.roll_max, 0, 45);
+    if (const auto v = a.value("--roll")) {
+      if (v->find(':') == std::string::npos) c.roll_max = a.double_or("--roll", c.roll_max, 0, 45);
+      else c.roll = parse_interval(*v, "--roll", -45, 45);
+    }
+    if (const auto v = a.value("--fx")) std::tie(c.fx_min, c.fx_max) = parse_interval(*v, "--fx", 50, 5000);
     p.camera = c;
   }
   const int n = a.int_or("--n", 1, 1, 100000);

@@ -62,6 +62,8 @@ void validate(const CameraRanges& r) {
   check(r.pitch_min >= -30 && r.pitch_min <= r.pitch_max && r.pitch_max <= 89,
         "pitch must satisfy -30 <= min <= max <= 89 degrees");
   check(r.roll_max >= 0 && r.roll_max <= 45, "roll must be in [0, 45] degrees");
+  check(!r.roll || (r.roll->first >= -45 && r.roll->first <= r.roll->second && r.roll->second <= 45),
+        "roll must satisfy -45 <= min <= max <= 45 degrees");
   check(r.fx_min >= 50 && r.fx_min <= r.fx_max && r.fx_max <= 5000,
         "focal length must satisfy 50 <= min <= max <= 5000 px");
   check(r.aim_jitter >= 0 && r.aim_jitter <= 180, "aim jitter must be in [0, 180] degrees");
@@ -104,7 +106,9 @@ Camera sample_camera(const FieldModel& field, const Intrinsics& k, const CameraR
     const Eigen::Vector2d to = target - pose.position.head<2>();
     pose.yaw = std::atan2(to.y(), to.x()) + rand.uniform(-1, 1) * ranges.aim_jitter * kDeg;
     pose.pitch = rand.uniform(ranges.pitch_min, ranges.pitch_max) * kDeg;
-    pose.roll = rand.uniform(-1, 1) * ranges.roll_max * kDeg;
+    // One draw either way, so a range given keeps every other draw of the seed.
+    pose.roll = (ranges.roll ? rand.uniform(ranges.roll->first, ranges.roll->second)
+                             : rand.uniform(-1, 1) * ranges.roll_max) * kDeg;
     const double fx = rand.uniform(ranges.fx_min, ranges.fx_max);
     Intrinsics ki = k;
     ki.fx = ki.fy = fx;

@@ -5,6 +5,7 @@
 // Camera frame: x right, y down, z forward (OpenCV). Pose angles: yaw is the heading in the
 // field's xy plane (0 = looking along +x), pitch > 0 looks down, roll turns the image clockwise.
 #include <optional>
+#include <utility>
 
 #include <Eigen/Core>
 
@@ -56,6 +57,9 @@ struct CameraRanges {
   double height_min = 0.12, height_max = 0.30;  // metres above the carpet
   double pitch_min = 2, pitch_max = 22;          // looking down
   double roll_max = 4;                           // |roll|
+  // The roll drawn within [lo, hi] instead of +-roll_max: a camera on a fixed mount (lo = hi),
+  // whose frames `fieldlines calibrate-camera` fits.
+  std::optional<std::pair<double, double>> roll;
   double fx_min = 600, fx_max = 680;             // focal length in pixels (fy = fx)
   double aim_jitter = 25;                        // heading error from the aim point (deg)
   double min_carpet_fraction = 0.35;             // share of the image that must show carpet
