@@ -19,6 +19,7 @@ int cmd_synth(const Args& args);
 int cmd_autolabel(const Args& args);
 int cmd_convert(const Args& args);
 int cmd_calibrate(const Args& args);
+int cmd_calibrate_camera(const Args& args);
 int cmd_eval_gt(const Args& args);  // `eval --gt` (cmd_eval_gt.cpp)
 
 }  // namespace fieldlines::cli

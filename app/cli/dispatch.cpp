@@ -18,6 +18,7 @@ constexpr Command kCommands[] = {
     {"detect", cmd_detect, "detect and classify field lines in images or folders"},
     {"bench", cmd_bench, "time the detector against OpenCV's line detectors"},
     {"calibrate", cmd_calibrate, "fit thresholds for a new field from unlabelled images (no labels)"},
+    {"calibrate-camera", cmd_calibrate_camera, "fit a standing camera's pitch, roll (and height) from the field lines"},
     {"train", cmd_train, "train classification thresholds with PSO on labelled data"},
     {"eval", cmd_eval, "evaluate thresholds on labelled data or synthetic ground truth"},
     {"sweep", cmd_sweep, "precision/recall over training fractions (the paper's Table 3)"},
@@ -29,13 +30,14 @@ constexpr Command kCommands[] = {
 void print_usage(std::FILE* to) {
   std::fprintf(to, "usage: fieldlines <command> [options]   (fieldlines <command> --help)\n\ncommands:\n");
   for (const auto& c : kCommands)
-    std::fprintf(to, "  %-10s %s\n", std::string(c.name).c_str(), std::string(c.summary).c_str());
+    std::fprintf(to, "  %-16s %s\n", std::string(c.name).c_str(), std::string(c.summary).c_str());
   std::fprintf(to, R"(
   --version  print the version;  --help  this list
 
 examples:
   fieldlines detect --draw overlays/ frames/
   fieldlines calibrate venue-photos/ -o robot.json
+  fieldlines calibrate-camera standing/ --camera nominal.json -o camera.json --line-width 0.05
   fieldlines train labels/project.json -o robot.json
   fieldlines convert labels/project.json -o labels.csv
   fieldlines detect --thresholds robot.json --video /dev/video0

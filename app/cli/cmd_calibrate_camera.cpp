@@ -1,0 +1,172 @@
+// `fieldlines calibrate-camera FRAMES... --camera START.json -o CAMERA.json`: a standing robot's
+// camera pitch and roll (and height) from the field lines it sees (train/camera_fit.hpp).
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli/image_inputs.hpp"
+#include "app/cli/output_file.hpp"
+#include "app/cli/progress.hpp"
+#include "app/cli/subcommand.hpp"
+#include "fieldlines/data/image_io.hpp"
+#include "fieldlines/detect/camera_file.hpp"
+#include "fieldlines/detect/detector.hpp"
+#include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
+#include "fieldlines/train/camera_fit.hpp"
+
+namespace fieldlines::cli {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kDeg = std::numbers::pi / 180;
+
+constexpr const char* kHelp = R"(usage: fieldlines calibrate-camera FRAMES... --camera START.json -o CAMERA.json [options]
+
+Fits the camera's pitch and roll from the field's own lines: projected on the ground with the
+right pose, a field's lines are all parallel or perpendicular. FRAMES (images or folders) show
+the field from one camera whose intrinsics are known and whose pitch, roll and height are the
+same in every frame (the robot stands; where it stands and where it looks may differ). The
+detector's stripes (the painted lines' centre lines) of all frames are fitted together, from
+START.json's pose within 8 degrees (docs/camera_calibration.md).
+
+The height does not change a direction. With --line-width, the painted width in metres, it
+scales the start's height by that width over the stripes' median width on the ground; without
+it the start's height is kept (and the report says so).
+
+Writes CAMERA.json (the camera file `fieldlines detect --camera` reads: the intrinsics of
+START.json with the fitted pose), atomically, and a report on stdout. Refused with exit code 2
+and no file written: START.json unreadable, a camera that sees no ground, frames without enough
+lines (2 in 2 directions), frames that contradict each other (the lines still stray after the
+fit), too few readable frames.
+
+options:
+  --camera FILE       the start camera: intrinsics, pitch, roll, height (camera file)
+  -o, --output FILE   the fitted camera file to write
+  --line-width M      the painted line width in metres (SPL and Humanoid 0.05, MSL 0.125,
+                      SSL 0.01): the height from the stripes' widths
+  --thresholds FILE   detector parameters and thresholds (default: built-in); the stripes
+                      stage is on whatever the file says
+  --json REPORT       also write the fit's figures as JSON
+  --quiet             no report on stdout, no progress on stderr
+  -h, --help          this help
+
+examples:
+  fieldlines calibrate-camera standing/ --camera nominal.json -o camera.json --line-width 0.05
+  fieldlines calibrate-camera a.png b.png c.png --camera nominal.json -o camera.json --json fit.json
+)";
+
+struct Frames {
+  std::vector<FrameLines> lines;
+  int failed = 0;  // images that could not be read (reported, the rest went on)
+};
+
+// Each readable image's stripes, with a progress bar; unreadable ones reported and counted.
+Frames detect_frames(const std::vector<std::string>& paths, LineDetector& detector, bool quiet) {
+  const ImageInputs inputs = expand_image_inputs(paths);
+  Frames out;
+  Progress progress("calibrate-camera", inputs.images.size(), stderr,
+                    {quiet ? ProgressParams::Mode::Off : ProgressParams::Mode::Auto});
+  for (const FailedImage& f : inputs.failed) {
+    progress.message("fieldlines calibrate-camera: " + f.error);
+    ++out.failed;
+  }
+  std::vector<Segment> segments;
+  for (const fs::path& image : inputs.images) {
+    try {
+      const cv::Mat frame = load_image(image);
+      detector.detect(frame, segments);
+      out.lines.push_back({detector.features().markings, frame.cols, frame.rows, image.filename().string()});
+    } catch (const Error& e) {
+      progress.message("fieldlines calibrate-camera: " + std::string(e.what()));
+      ++out.failed;
+    }
+    progress.advance();
+  }
+  return out;
+}
+
+double deg(double rad) { return rad / kDeg; }
+
+nlohmann::json report_json(const CameraFit& fit, const GroundCamera& start, const Frames& frames,
+                           const std::optional<double>& line_width) {
+  nlohmann::json per_frame = nlohmann::json::array();
+  for (std::size_t i = 0; i < frames.lines.size(); ++i) {
+    const double share = fit.frame_fitting_share[i];
+    per_frame.push_back({{"image", frames.lines[i].name},
+                         {"lines", frames.lines[i].markings.size()},
+                         {"fitting_share", std::isnan(share) ? nlohmann::json(nullptr) : nlohmann::json(share)}});
+  }
+  return {{"frames", frames.lines.size()},
+          {"failed_inputs", frames.failed},
+          {"frames_used", fit.frames_used},
+          {"lines_used", fit.lines_used},
+          {"start", to_json(start)},
+          {"camera", to_json(fit.camera)},
+          {"rms_before_deg", fit.rms_before_deg},
+          {"rms_after_deg", fit.rms_after_deg},
+          {"fitting_share", fit.fitting_share},
+          {"height", {{"fitted", fit.height_fitted},
+                      {"line_width_m", line_width ? nlohmann::json(*line_width) : nlohmann::json(nullptr)},
+                      {"median_stripe_width_m", fit.median_width_m},
+                      {"stripes", fit.widths_used}}},
+          {"per_frame", per_frame}};
+}
+
+void print_report(const CameraFit& fit, const GroundCamera& start, const Frames& frames, const fs::path& output) {
+  std::printf("frames: %d of %zu used (%d unreadable), %d lines\n", fit.frames_used, frames.lines.size(), frames.failed,
+              fit.lines_used);
+  std::printf("pitch %.2f -> %.2f deg, roll %.2f -> %.2f deg\n", deg(start.pitch_rad), deg(fit.camera.pitch_rad),
+              deg(start.roll_rad), deg(fit.camera.roll_rad));
+  std::printf("residual %.2f -> %.2f deg RMS (the better-fitting half of the lines); %.0f %% of the lines' weight fits\n",
+              fit.rms_before_deg, fit.rms_after_deg, 100 * fit.fitting_share);
+  if (fit.height_fitted)
+    std::printf("height %.3f -> %.3f m, from %d stripes' median ground width (%.1f mm at the start height)\n",
+                start.height_m, fit.camera.height_m, fit.widths_used, 1000 * fit.median_width_m);
+  else
+    std::printf("height %.3f m kept from the start camera (no --line-width: directions do not see the height)\n",
+                start.height_m);
+  std::printf("wrote %s\n", output.string().c_str());
+}
+
+}  // namespace
+
+int cmd_calibrate_camera(const Args& args) {
+  const auto parsed = parse_or_print_help(args, {"--camera", "-o", "--output", "--json", "--thresholds", "--line-width"},
+                                          {"--quiet"}, kHelp);
+  if (!parsed) return 0;
+  const ParsedArgs& a = *parsed;
+  if (a.positionals().empty()) throw Error("expected at least one image or folder (see --help)");
+  const auto camera_path = a.value("--camera");
+  if (!camera_path) throw Error("missing --camera START.json (see --help)");
+  // Before any long work: bad paths and values fail now, and never over an input.
+  std::vector<std::string> inputs = a.positionals();
+  inputs.push_back(*camera_path);
+  const fs::path output = required_output_path(a, "-o", "CAMERA.json", inputs);
+  const std::optional<fs::path> report = output_path(a, "--json", inputs);
+  CameraFitParams params;
+  if (a.has("--line-width")) params.line_width_m = a.double_or("--line-width", 0, 0.001, 0.5);
+  const GroundCamera start = load_camera_file(*camera_path);
+  ThresholdsFile config;
+  if (const auto t = a.value("--thresholds")) config = load_thresholds_file(*t);
+  config.detector.stripes = true;
+  const bool quiet = a.flag("--quiet");
+
+  LineDetector detector(config.detector, config.thresholds);
+  const Frames frames = detect_frames(a.positionals(), detector, quiet);
+  if (frames.lines.empty()) throw Error("no readable frame among the inputs");
+  const CameraFit fit = fit_camera(frames.lines, start, params);
+
+  write_output_file(output, to_json(fit.camera).dump(2) + "\n");
+  if (report) write_output_file(*report, report_json(fit, start, frames, params.line_width_m).dump(2) + "\n");
+  if (!quiet) print_report(fit, start, frames, output);
+  return frames.failed ? 1 : 0;
+}
+
+}  // namespace fieldlines::cli
