@@ -228,3 +228,28 @@ TEST(GroundFeatures, TheDetectorProjectsItsFeaturesWhenTheCameraIsSet) {
   EXPECT_GT(segments, 5u);
   EXPECT_GT(boundary, 5u);
 }
+
+// A field's lines meet square on the ground: an L whose arms do (though not in the image)
+// passes, one 30 degrees off does not, within the tolerance either way.
+TEST(GroundFeatures, AJunctionIsSquareOnTheGroundOrNot) {
+  const fl::GroundCamera camera = kid_camera();
+  const fl::GroundProjection p(camera);
+  const cv::Point2d centre(2.0, -0.5);
+  const auto junction = [&](double second_arm_deg) {
+    fl::Intersection j;
+    const cv::Point2d c = image_of(p, centre);
+    j.x = float(c.x), j.y = float(c.y), j.num_rays = 2;
+    const double arm[2] = {10 * kDeg, second_arm_deg * kDeg};
+    for (int k = 0; k < 2; ++k)
+      j.heading_rays[k] = float(heading(c, image_of(p, centre + 0.5 * cv::Point2d(std::cos(arm[k]), std::sin(arm[k])))));
+    return j;
+  };
+  EXPECT_TRUE(fl::square_on_ground(junction(100), p, 5));
+  EXPECT_TRUE(fl::square_on_ground(junction(190), p, 5)) << "straight on: a T's or an X's opposite arms";
+  EXPECT_FALSE(fl::square_on_ground(junction(130), p, 15));
+  EXPECT_TRUE(fl::square_on_ground(junction(110), p, 15));
+  EXPECT_FALSE(fl::square_on_ground(junction(110), p, 5));
+  fl::Intersection above = junction(100);
+  above.y = -150;  // above the horizon (row -59 at this pitch): not on the ground
+  EXPECT_FALSE(fl::square_on_ground(above, p, 45));
+}

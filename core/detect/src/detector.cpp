@@ -306,6 +306,12 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
                  ThinLines::Refused, Shape::Straight);
     impl_->lines.insert(impl_->lines.end(), impl_->unpieced_lines.begin(), impl_->unpieced_lines.end());
     find_intersections(impl_->lines, params_, impl_->intersections, f.intersections, bgr.size());
+    if (camera_ && params_.intersection_ground_tolerance > 0) {
+      const GroundProjection ground(*camera_);
+      std::erase_if(f.intersections, [&](const Intersection& j) {
+        return !square_on_ground(j, ground, params_.intersection_ground_tolerance);
+      });
+    }
   }
   // The circle's pieces are markings too (arcs).
   for (std::size_t i = 0; i < impl_->arcs.size(); ++i)

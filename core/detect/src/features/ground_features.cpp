@@ -106,22 +106,25 @@ void project_marking(const Marking& m, const Projections& p, std::vector<GroundM
   out.push_back({*start, *end, width});
 }
 
+// The unit ground direction of ray k of `j`, whose centre lies on the ground at `origin`: from
+// the point a pixel along it (a ray running up to the horizon: from the point a pixel back,
+// reversed). Zero when neither is on the ground.
+std::array<double, 2> ground_ray(const Intersection& j, int k, const GroundProjection& at, cv::Point2d origin) {
+  const double h = j.heading_rays[static_cast<std::size_t>(k)];
+  const cv::Point2d step(kRayStepPx * std::cos(h), kRayStepPx * std::sin(h));
+  cv::Point2d d;
+  if (const auto ahead = at.to_ground(j.x + step.x, j.y + step.y)) d = *ahead - origin;
+  else if (const auto behind = at.to_ground(j.x - step.x, j.y - step.y)) d = origin - *behind;
+  const double n = std::hypot(d.x, d.y);
+  return n > 0 ? std::array<double, 2>{d.x / n, d.y / n} : std::array<double, 2>{};
+}
+
 void project_intersection(const Intersection& j, const Projections& p, std::vector<GroundIntersection>& out) {
   const auto centre = p.point(j.x, j.y);
   if (!centre) return;
   GroundIntersection g{*centre, j.type, std::clamp(j.num_rays, 0, 4), {}, j.confidence};
-  const GroundProjection& at = p.centre();
-  const auto origin = at.to_ground(j.x, j.y);
-  for (int k = 0; k < g.num_rays; ++k) {
-    const double h = j.heading_rays[static_cast<std::size_t>(k)];
-    const cv::Point2d step(kRayStepPx * std::cos(h), kRayStepPx * std::sin(h));
-    // A ray running up to the horizon: its direction from the point a step back, reversed.
-    cv::Point2d d;
-    if (const auto ahead = at.to_ground(j.x + step.x, j.y + step.y)) d = *ahead - *origin;
-    else if (const auto behind = at.to_ground(j.x - step.x, j.y - step.y)) d = *origin - *behind;
-    const double n = std::hypot(d.x, d.y);
-    g.rays[static_cast<std::size_t>(k)] = n > 0 ? std::array<double, 2>{d.x / n, d.y / n} : std::array<double, 2>{};
-  }
+  const cv::Point2d origin(centre->x, centre->y);
+  for (int k = 0; k < g.num_rays; ++k) g.rays[static_cast<std::size_t>(k)] = ground_ray(j, k, p.centre(), origin);
   out.push_back(g);
 }
 
@@ -190,6 +193,23 @@ void project_ellipse(const MarkingEllipse& e, const Projections& p, std::vector<
 }
 
 }  // namespace
+
+bool square_on_ground(const Intersection& j, const GroundProjection& projection, double tolerance_deg) {
+  const auto origin = projection.to_ground(j.x, j.y);
+  if (!origin) return false;
+  const int n = std::clamp(j.num_rays, 0, 4);
+  std::array<std::array<double, 2>, 4> rays{};
+  for (int k = 0; k < n; ++k) rays[static_cast<std::size_t>(k)] = ground_ray(j, k, projection, *origin);
+  // |sin 2a| is 0 at every multiple of 90 degrees and sin(2 tolerance) at the tolerance.
+  const double limit = std::sin(2 * std::min(tolerance_deg, 45.0) * kRadiansPerDegree);
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      const auto &u = rays[static_cast<std::size_t>(a)], &v = rays[static_cast<std::size_t>(b)];
+      const double cos_ab = u[0] * v[0] + u[1] * v[1], sin_ab = u[0] * v[1] - u[1] * v[0];
+      if (std::abs(2 * sin_ab * cos_ab) > limit) return false;
+    }
+  return true;
+}
 
 void validate(const GroundFeatureParams& params) {
   if (!(params.angle_sigma_deg >= 0 && params.angle_sigma_deg <= 10))

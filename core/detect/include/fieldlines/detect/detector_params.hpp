@@ -47,6 +47,10 @@ struct DetectorParams {
   bool intersections = false;
   double intersection_min_angle = 10;  // far corners look this acute in perspective
   double intersection_reach = 1.5;
+  // With the camera known, a junction whose arms do not meet at right angles on the turf
+  // (ground_features.hpp: square_on_ground) within this many degrees is dropped; 0: off. A
+  // field's lines meet square; what the image calls a corner in perspective often is not one.
+  double intersection_ground_tolerance = 15;
   // The centre circle from short stripe pieces (centre_circle.hpp); off by default. On, the frame
   // is drawn a second time for pieces from piece_length px, which the junctions take too.
   bool centre_circle = false;
@@ -90,7 +94,7 @@ struct ParamSpec {
   bool in_files = true;     // written into and read from thresholds and project files
 };
 
-inline constexpr std::array<ParamSpec, 27> kDetectorParamSpecs{{
+inline constexpr std::array<ParamSpec, 28> kDetectorParamSpecs{{
     {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
      .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
     {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
@@ -135,6 +139,10 @@ inline constexpr std::array<ParamSpec, 27> kDetectorParamSpecs{{
      .unit = "deg", .help = "two centre lines meet only at more than this angle", .slider = {5, 80}},
     {.name = "intersection_reach", .member = &DetectorParams::intersection_reach, .range = {0, 20},
      .help = "how far a line may end short of a crossing, in line widths (plus 4 px)", .slider = {0, 6}},
+    {.name = "intersection_ground_tolerance", .member = &DetectorParams::intersection_ground_tolerance,
+     .range = {0, 45}, .unit = "deg",
+     .help = "with a camera, junctions whose arms are not square on the turf within this are dropped; 0: off",
+     .slider = {0, 30}},
     {.name = "centre_circle", .member = &DetectorParams::centre_circle,
      .help = "fit the centre circle to short stripe pieces of a second drawing (runs the stripes stage too)"},
     {.name = "piece_length", .member = &DetectorParams::piece_length, .range = {3, 10000},

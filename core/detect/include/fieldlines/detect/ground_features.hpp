@@ -66,6 +66,11 @@ struct GroundFeatureParams {
 // Throws fieldlines::Error unless the sigma lies in [0, 10] degrees and the distance is positive.
 void validate(const GroundFeatureParams& params);
 
+// Whether a junction's arms meet square on the ground: every two of its rays' ground directions
+// (as project_features() gives them) within `tolerance_deg` of a multiple of 90 degrees. False
+// when its centre does not lie on the ground.
+bool square_on_ground(const Intersection& junction, const GroundProjection& projection, double tolerance_deg);
+
 // `image` (one frame's features, image pixels) on the ground through `camera`, into `out`
 // (cleared first; its vectors keep their capacity, so a warm caller allocates nothing).
 void project_features(const FieldFeatures& image, const GroundCamera& camera, const GroundFeatureParams& params,
