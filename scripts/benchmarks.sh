@@ -201,6 +201,10 @@ for set_id, title, label, folder, options in sets:
                   + (f" Every field feature on (those and the centre circle, which draws the frame a second time) "
                      f"against none: features/fieldlines = {worse(j['features_over_plain'])} (target <= 1.2)."
                      if "features_over_plain" in j else "")
+                  + (f" The same with a camera, every feature also on the ground (the circle fitted there, junctions "
+                     f"checked square, everything projected), against without: ground/features = "
+                     f"{worse(j['ground_over_features'])} (target <= 1.1)."
+                     if "ground_over_features" in j else "")
                   + (f" The coarse pass (coarse_scale 3, the lower half drawn again at a third of the size, as calibration chooses it) against one "
                      f"scale: coarse/fieldlines = {worse(j['coarse_over_plain'])} (target <= 1.25)."
                      if "coarse_over_plain" in j else ""), ""]

@@ -32,12 +32,15 @@ constexpr const char* kHelp = R"(usage: fieldlines bench [options] PATH...
 Times, in this process, on the same colour images and on one thread (cv::setNumThreads(1);
 our rows may take more with --detector-threads):
   fieldlines  our LineDetector: ELSED + colour gradients + classification
-  fieldlines+light, fieldlines+stripes, fieldlines+coarse, fieldlines+junctions, fieldlines+features
+  fieldlines+light, fieldlines+stripes, fieldlines+coarse, fieldlines+junctions, fieldlines+features,
+  fieldlines+ground
               the same with the per-frame light adaptation, with the stripes stage (every
               marking checked and measured across its width), with the coarse pass (the lower
               half drawn again at a third of the size: coarse_scale 3), with the stripes, field boundary
               and L/T/X junctions (the features of the detector's own drawing), or with every
-              field feature (those and the centre circle, which draws the frame a second time)
+              field feature (those and the centre circle, which draws the frame a second time),
+              or with those and a camera (a 60-degree view 30 degrees down, 0.6 m up): every
+              feature also on the ground (the circle fitted there, junctions checked square)
   edlines     OpenCV ximgproc EdgeDrawing in EDLines mode (detectEdges + detectLines)
   fld         OpenCV ximgproc FastLineDetector
   lsd         OpenCV LineSegmentDetector
@@ -56,8 +59,9 @@ summed over the round's calls (the median call would be one frame's, and hide wh
 costs on the busier frames); the median over rounds. "worse" is the larger of the two orders
 (the less flattering to us), with its min-max over rounds. The targets ours <= 0.4 x edlines
 and ours <= 1.5 x floor (--floor-target) are checked against the worse ratio; gradients/floor
-junctions/fieldlines and features/fieldlines (what the field features cost, target <= 1.2)
-and coarse/fieldlines (what the coarse pass costs, target <= 1.25) are reported the same way.
+junctions/fieldlines and features/fieldlines (what the field features cost, target <= 1.2),
+ground/features (what the ground stage adds, target <= 1.1) and coarse/fieldlines (what the
+coarse pass costs, target <= 1.25) are reported the same way.
 PATH is an image or a folder; images that fail to load are reported and skipped (exit 1).
 
 options:
@@ -88,7 +92,8 @@ JSON: {"images":N, "scale":{"width","height"} (with --scale only), "detector_thr
     "segments_per_image", "block":{"mean_ms","median_ms","p90_ms"}, "interleaved":{likewise},
     "ours_over_this":RATIO}],
   "targets":{"edlines":TARGET, "floor":TARGET}, "gradients_over_floor":RATIO,
-  "junctions_over_plain":RATIO, "features_over_plain":RATIO, "coarse_over_plain":RATIO}
+  "junctions_over_plain":RATIO, "features_over_plain":RATIO, "ground_over_features":RATIO,
+  "coarse_over_plain":RATIO}
   RATIO  = {"block", "interleaved", "worse", "worse_order" ("block" or "interleaved"), "min", "max"}
            (min and max: the worse order's ratio over rounds)
   TARGET = {"ratio" (the worse ours/this), "limit", "met", "order", "min", "max"}
@@ -249,6 +254,8 @@ int cmd_bench(const Args& args) {
   report("junctions/fieldlines", junctions, "stripes, field boundary and junctions against none; target <= 1.2");
   const peers::RatioSummary features = peers::ratio_in_both_orders(row("fieldlines+features"), ours);
   report("features/fieldlines", features, "every field feature on against none; target <= 1.2");
+  const peers::RatioSummary ground = peers::ratio_in_both_orders(row("fieldlines+ground"), row("fieldlines+features"));
+  report("ground/features", ground, "every feature with a camera, on the ground too, against without; target <= 1.1");
   const peers::RatioSummary coarse = peers::ratio_in_both_orders(row("fieldlines+coarse"), ours);
   report("coarse/fieldlines", coarse, "the coarse pass (coarse_scale 3) against one scale; target <= 1.25");
 
@@ -265,6 +272,7 @@ int cmd_bench(const Args& args) {
     j["gradients_over_floor"] = ratio_json(gradients);
     j["junctions_over_plain"] = ratio_json(junctions);
     j["features_over_plain"] = ratio_json(features);
+    j["ground_over_features"] = ratio_json(ground);
     j["coarse_over_plain"] = ratio_json(coarse);
     write_output_file(*json_out, j.dump(2) + "\n");
     std::printf("results written to %s\n", json_out->string().c_str());

@@ -17,7 +17,8 @@ namespace fieldlines::peers {
 
 struct TimedDetector {
   std::string name;  // "fieldlines", "fieldlines+light", "fieldlines+stripes", "fieldlines+coarse",
-                     // "fieldlines+junctions", "fieldlines+features", "edlines", "fld", "lsd",
+                     // "fieldlines+junctions", "fieldlines+features", "fieldlines+ground",
+                     // "edlines", "fld", "lsd",
                      // "gradients", "floor"
   std::string what;  // one line for tables and --help
   // Runs on a BGR image and returns the number of segments found. Owns its buffers and reuses
