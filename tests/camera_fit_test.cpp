@@ -232,6 +232,10 @@ TEST(CameraFit, NoLinesIsRefused) {
   frames[0].markings = {{100, 400, 300, 420, 5}, {110, 300, 310, 320, 5}};
   const std::string one_direction = thrown(frames, camera_of({}));
   EXPECT_NE(one_direction.find("2 lines in 2 directions"), std::string::npos) << one_direction;
+  // Lines of one or two frames: poses far apart may square them alike.
+  const auto two = frames_of({}, 2, 963);
+  const std::string few_frames = thrown(two, camera_of({}));
+  EXPECT_NE(few_frames.find("too few frames with lines"), std::string::npos) << few_frames;
 }
 
 TEST(CameraFit, LinesAboveTheHorizonAreRefused) {
@@ -242,7 +246,7 @@ TEST(CameraFit, LinesAboveTheHorizonAreRefused) {
 }
 
 TEST(CameraFit, ACameraLookingAboveTheHorizonIsRefused) {
-  const auto frames = frames_of({}, 2, 961);
+  const auto frames = frames_of({}, 3, 961);
   const std::string message = thrown(frames, camera_of({.pitch_deg = -60, .roll_deg = 0, .height_m = 0.6}));
   EXPECT_NE(message.find("sees no ground"), std::string::npos) << message;
 }
@@ -268,7 +272,7 @@ TEST(CameraFit, ContradictoryFramesAreRefused) {
 }
 
 TEST(CameraFit, BadParametersAreRefused) {
-  const auto frames = frames_of({}, 2, 981);
+  const auto frames = frames_of({}, 3, 981);
   EXPECT_NE(thrown(frames, camera_of({}), {.line_width_m = std::nan("")}).find("line width"), std::string::npos);
   EXPECT_NE(thrown(frames, camera_of({}), {.line_width_m = 3}).find("line width"), std::string::npos);
   EXPECT_NE(thrown({}, camera_of({})).find("no frames"), std::string::npos);

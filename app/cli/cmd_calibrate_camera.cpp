@@ -43,8 +43,8 @@ it the start's height is kept (and the report says so).
 Writes CAMERA.json (the camera file `fieldlines detect --camera` reads: the intrinsics of
 START.json with the fitted pose), atomically, and a report on stdout. Refused with exit code 2
 and no file written: START.json unreadable, a camera that sees no ground, frames without enough
-lines (2 in 2 directions), frames that contradict each other (the lines still stray after the
-fit), too few readable frames.
+lines (2 in 2 directions) or lines that do not pin the pose down (its sd above 1 degree),
+frames that contradict each other (the lines still stray after the fit), no readable frame.
 
 options:
   --camera FILE       the start camera: intrinsics, pitch, roll, height (camera file)
@@ -112,6 +112,8 @@ nlohmann::json report_json(const CameraFit& fit, const GroundCamera& start, cons
           {"rms_before_deg", fit.rms_before_deg},
           {"rms_after_deg", fit.rms_after_deg},
           {"fitting_share", fit.fitting_share},
+          {"pitch_sd_deg", fit.pitch_sd_deg},
+          {"roll_sd_deg", fit.roll_sd_deg},
           {"height", {{"fitted", fit.height_fitted},
                       {"line_width_m", line_width ? nlohmann::json(*line_width) : nlohmann::json(nullptr)},
                       {"median_stripe_width_m", fit.median_width_m},
@@ -122,8 +124,9 @@ nlohmann::json report_json(const CameraFit& fit, const GroundCamera& start, cons
 void print_report(const CameraFit& fit, const GroundCamera& start, const Frames& frames, const fs::path& output) {
   std::printf("frames: %d of %zu used (%d unreadable), %d lines\n", fit.frames_used, frames.lines.size(), frames.failed,
               fit.lines_used);
-  std::printf("pitch %.2f -> %.2f deg, roll %.2f -> %.2f deg\n", deg(start.pitch_rad), deg(fit.camera.pitch_rad),
-              deg(start.roll_rad), deg(fit.camera.roll_rad));
+  std::printf("pitch %.2f -> %.2f deg, roll %.2f -> %.2f deg (sd %.2f, %.2f for 1 px on the lines' ends)\n",
+              deg(start.pitch_rad), deg(fit.camera.pitch_rad), deg(start.roll_rad), deg(fit.camera.roll_rad),
+              fit.pitch_sd_deg, fit.roll_sd_deg);
   std::printf("residual %.2f -> %.2f deg RMS (the better-fitting half of the lines); %.0f %% of the lines' weight fits\n",
               fit.rms_before_deg, fit.rms_after_deg, 100 * fit.fitting_share);
   if (fit.height_fitted)

@@ -167,6 +167,27 @@ double fitting_share(std::span<const Residual> rs, double scale) {
   return all > 0 ? fitting / all : 0;
 }
 
+// The sds of the fitted pitch and roll (radians) from the fitting lines' residuals: the inverse
+// of the information sum J J^T / sd^2, J a residual's change with the pose (central
+// differences; the frames' headings follow, as they do in the fit). Infinite when the lines do
+// not pin the pose down (too few, in too few directions).
+std::array<double, 2> pose_sd(const FrameSet& set, const GroundCamera& start, Offset at, std::span<const Residual> rs,
+                              const CameraFitParams& params) {
+  const double h = 0.01 * kDeg;
+  const auto r_pp = residuals(set, start, {at.pitch + h, at.roll}, params), r_pm = residuals(set, start, {at.pitch - h, at.roll}, params);
+  const auto r_rp = residuals(set, start, {at.pitch, at.roll + h}, params), r_rm = residuals(set, start, {at.pitch, at.roll - h}, params);
+  double a = 0, b = 0, c = 0;  // the information matrix [a b; b c]
+  for (std::size_t i = 0; i < rs.size(); ++i) {
+    if (std::abs(rs[i].angle) > params.loss_scale_sd * rs[i].sd) continue;
+    const double jp = (r_pp[i].angle - r_pm[i].angle) / (2 * h), jr = (r_rp[i].angle - r_rm[i].angle) / (2 * h);
+    const double w = 1 / (rs[i].sd * rs[i].sd);
+    a += w * jp * jp, b += w * jp * jr, c += w * jr * jr;
+  }
+  const double det = a * c - b * b;
+  if (!(det > 1e-12 * (a * c))) return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  return {std::sqrt(c / det), std::sqrt(a / det)};
+}
+
 // The lines that reach the turf under `g`, per frame; a frame keeps its lines only when it has
 // two or more (one line alone tells no direction apart from the frame's unknown yaw).
 FrameSet usable_lines(std::span<const FrameLines> frames, const GroundProjection& g, const CameraFitParams& params) {
@@ -189,6 +210,10 @@ int count_lines(const FrameSet& set) {
   int n = 0;
   for (const auto& lines : set) n += static_cast<int>(lines.size());
   return n;
+}
+
+int count_frames(const FrameSet& set) {
+  return static_cast<int>(std::ranges::count_if(set, [](const auto& lines) { return !lines.empty(); }));
 }
 
 // True when two of the lines' image directions differ by `min_angle` or more (modulo 180).
@@ -331,6 +356,8 @@ void validate(const CameraFitParams& p) {
   check(std::isfinite(p.loss_scale_sd) && p.loss_scale_sd > 0, "loss_scale_sd must be positive");
   check(std::isfinite(p.trim_fraction) && p.trim_fraction >= 0 && p.trim_fraction < 1, "trim_fraction must be in [0, 1)");
   check(std::isfinite(p.max_rms_deg) && p.max_rms_deg > 0, "max_rms_deg must be positive");
+  check(p.min_frames >= 1, "min_frames must be at least 1");
+  check(std::isfinite(p.max_pose_sd_deg) && p.max_pose_sd_deg > 0, "max_pose_sd_deg must be positive");
   check(std::isfinite(p.min_fitting_share) && p.min_fitting_share >= 0 && p.min_fitting_share <= 1,
         "min_fitting_share must be in [0, 1]");
   check(std::isfinite(p.min_direction_deg) && p.min_direction_deg > 0 && p.min_direction_deg <= 90,
@@ -367,13 +394,18 @@ CameraFit fit_camera(std::span<const FrameLines> frames, const GroundCamera& sta
   if (start_lines < 2 || !two_directions(start_set, params.min_direction_deg * kDeg))
     throw Error("too few lines: the frames hold " + std::to_string(start_lines) +
                 " usable lines in frames of two or more; the fit needs at least 2 lines in 2 directions");
+  if (const int n = count_frames(start_set); n < params.min_frames)
+    throw Error("too few frames with lines: " + std::to_string(n) + " of " + std::to_string(frames.size()) +
+                " show two usable lines or more, and the fit needs " + std::to_string(params.min_frames) +
+                " (in fewer, poses far apart can square the few lines alike)");
 
   // The lines chosen at the start pose are fitted; those the fitted pose puts on the ground
   // (a start far off loses lines near the horizon) are fitted again from there.
   const Offset first = fit_offset(start_set, start, params);
   const FrameSet set = usable_lines(frames, GroundProjection(start, first.pitch, first.roll), params);
-  if (count_lines(set) < 2)
-    throw Error("too few lines: the fitted pose puts fewer than 2 lines of frames of two or more on the ground");
+  if (count_lines(set) < 2 || count_frames(set) < params.min_frames)
+    throw Error("too few lines: the fitted pose puts fewer than " + std::to_string(params.min_frames) +
+                " frames of two lines or more on the ground");
   const auto f = [&](Offset x) { return loss(set, start, x, params); };
   const Offset fitted = nelder_mead(f, first, params.grid_step_deg * kDeg / 4, 1e-4 * kDeg);
 
@@ -411,6 +443,16 @@ CameraFit fit_camera(std::span<const FrameLines> frames, const GroundCamera& sta
   }
 
 
+
+  const auto [pitch_sd, roll_sd] = pose_sd(set, start, fitted, after, params);
+  fit.pitch_sd_deg = pitch_sd / kDeg, fit.roll_sd_deg = roll_sd / kDeg;
+  if (!(std::max(fit.pitch_sd_deg, fit.roll_sd_deg) <= params.max_pose_sd_deg)) {
+    const auto sd = [](double v) { return v > 45 ? std::string("over 45") : fixed(v, 1); };
+    throw Error("the lines do not pin the pose down: " + std::to_string(fit.lines_used) + " lines in " +
+                std::to_string(fit.frames_used) + " frames leave the pitch uncertain by " + sd(fit.pitch_sd_deg) +
+                " deg and the roll by " + sd(fit.roll_sd_deg) + " (at most " + fixed(params.max_pose_sd_deg, 1) +
+                "); more frames, with long lines in two directions, would");
+  }
 
   const std::vector<double> widths = ground_widths(set, GroundProjection(start, fitted.pitch, fitted.roll), after, params);
   fit.widths_used = static_cast<int>(widths.size());

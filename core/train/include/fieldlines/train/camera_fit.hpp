@@ -55,6 +55,12 @@ struct CameraFitParams {
   // the frames contradict each other.
   double max_rms_deg = 3;
   double min_fitting_share = 0.8;
+  // The fitted pitch's and roll's sd (from the lines' sds and how their residuals change with
+  // the pose) above this: the lines do not pin the pose down, refused.
+  double max_pose_sd_deg = 1;
+  // Frames of two usable lines or more needed: the few lines of one or two frames can be
+  // squared by poses far apart (a wrong pose with a small sd).
+  int min_frames = 3;
   double min_direction_deg = 10;  // two image lines this far apart make two directions
   std::optional<double> line_width_m;  // the painted width: the height from the stripes' widths
   double min_width_px = 3;        // thinner stripes have no say in the height (blur, pixels)
@@ -74,6 +80,7 @@ struct CameraFit {
   // pose: all lines, and per frame (NaN for a frame not used).
   double fitting_share = 0;
   std::vector<double> frame_fitting_share;
+  double pitch_sd_deg = 0, roll_sd_deg = 0;  // the fit's uncertainty for 1 px of noise on the ends
   bool height_fitted = false;     // true: from line_width_m; false: the start's height kept
   double median_width_m = 0;      // the stripes' median ground width at the start height (0: none)
   int widths_used = 0;            // stripes that measured it
@@ -81,10 +88,11 @@ struct CameraFit {
 
 // Throws fieldlines::Error with a message for the user when the start camera fails validate(),
 // sees no ground in any frame (its horizon below the whole image), the frames hold no line or
-// too few (fewer than two lines in two directions in frames of two lines or more), all lines
+// too few (fewer than two lines in two directions in frames of two lines or more, fewer than
+// min_frames such frames), all lines
 // lie above the start camera's horizon or too far, the fit leaves the lines straying by more
 // than max_rms_deg or with less than min_fitting_share fitting (frames that disagree: it names
-// the worst), or the height is asked for and
+// the worst), the lines do not pin the pose down (max_pose_sd_deg), or the height is asked for and
 // no stripe measures a width.
 CameraFit fit_camera(std::span<const FrameLines> frames, const GroundCamera& start, const CameraFitParams& params = {});
 
