@@ -73,6 +73,10 @@ options:
                     live frames-per-second and latency readout on stderr
   --video-out OUT   with --video: write the overlays as an MJPG video (.avi)
   --max-frames N    with --video: stop after N frames
+  --steady MS       with --video and --camera: junctions and the centre circle held steady on
+                    the ground over the stream (a feature missed for up to MS milliseconds is
+                    kept; steady_features.hpp), and a summary of how often each was seen and
+                    held; off by default, as on the robot
   -h, --help        this help
 
 A bad file (missing, corrupt, empty, unsupported pixel type, too large) is reported on
@@ -107,6 +111,7 @@ struct Options {
   std::optional<std::string> video;
   std::optional<fs::path> video_out;
   long max_frames = -1;
+  std::optional<double> steady_ms;
 };
 
 void apply_feature_options(const Options& opt, DetectorParams& params) {
@@ -135,6 +140,10 @@ Options parse(const ParsedArgs& a) {
   o.video = a.value("--video");
   o.video_out = output_path(a, "--video-out");
   o.max_frames = a.int_or("--max-frames", -1, 1, 1 << 30);
+  if (a.value("--steady")) {
+    o.steady_ms = a.double_or("--steady", 80, 0, 10000);
+    if (!o.video || !o.camera) throw Error("--steady needs --video and --camera (it holds features on the ground)");
+  }
   return o;
 }
 
@@ -187,7 +196,7 @@ std::string summary_line(const ImageDetections& d) {
 int cmd_detect(const Args& args) {
   const auto parsed = parse_or_print_help(
       args, {"--thresholds", "--json", "--csv", "--draw", "--threads", "--video", "--video-out", "--max-frames",
-             "--camera"},
+             "--camera", "--steady"},
       {"--quiet", "--stripes", "--no-stripes", "--features", "--draw-all"}, help_text());
   if (!parsed) return 0;
   const Options opt = parse(*parsed);
@@ -197,7 +206,8 @@ int cmd_detect(const Args& args) {
     ThresholdsFile video_config;
     if (opt.thresholds) video_config = load_thresholds_file(*opt.thresholds);
     apply_feature_options(opt, video_config.detector);
-    return run_video_detection({*opt.video, opt.video_out, opt.max_frames, opt.quiet, opt.camera}, video_config);
+    return run_video_detection({*opt.video, opt.video_out, opt.max_frames, opt.quiet, opt.camera, opt.steady_ms},
+                               video_config);
   }
   if (opt.video_out || opt.max_frames >= 0) throw Error("--video-out and --max-frames go with --video");
   if (opt.paths.empty()) throw Error("no PATH given: name at least one image or folder (see --help)");

@@ -9,6 +9,7 @@
 
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/steady_features.hpp"
 #include "fieldlines/data/overlay.hpp"
 #include "fieldlines/data/video_io.hpp"
 
@@ -53,6 +54,11 @@ int run_video_detection(const VideoOptions& options, const ThresholdsFile& confi
   std::vector<Segment> segments;
   std::vector<double> latencies;  // grab + decode + detect (+ draw), per frame
   long frames = 0, markings = 0, boundaries = 0;
+  // --steady: frames where a circle (or any junction) was seen, and where the steady features
+  // have one; a localiser sees the second.
+  std::optional<SteadyFeatures> steady;
+  if (options.steady_ms) steady.emplace(SteadyParams{.hold_ms = *options.steady_ms});
+  long circle_seen = 0, circle_steady = 0, junctions_seen = 0, junctions_steady = 0;
   cv::Mat frame;
   const auto start = Clock::now();
   auto last_report = start;
@@ -61,6 +67,15 @@ int run_video_detection(const VideoOptions& options, const ThresholdsFile& confi
     const auto t0 = Clock::now();
     if (!capture.read(frame) || frame.empty()) break;
     detector.detect(frame, segments);
+    if (steady) {
+      // The stream's own clock where it has one; else the frame's place at the nominal rate.
+      const double position_ms = capture.get(cv::CAP_PROP_POS_MSEC), fps = capture.get(cv::CAP_PROP_FPS);
+      const double t = position_ms > 0 ? position_ms : frames * 1000.0 / (fps > 0 ? fps : 30);
+      const GroundFeatures& seen = detector.ground_features();
+      const GroundFeatures& held = steady->update(seen, t);
+      circle_seen += !seen.ellipses.empty(), circle_steady += !held.ellipses.empty();
+      junctions_seen += !seen.intersections.empty(), junctions_steady += !held.intersections.empty();
+    }
     if (options.overlay_out) {
       const cv::Mat drawn = draw_overlay(frame, segments);
       if (!writer.isOpened()) {
@@ -92,6 +107,9 @@ int run_video_detection(const VideoOptions& options, const ThresholdsFile& confi
   std::printf("%ld frames in %.2f s: %.1f fps, latency median %.2f ms, p90 %.2f ms; %ld marking and %ld boundary segments\n",
               frames, seconds, frames / seconds, percentile(latencies, 0.5), percentile(latencies, 0.9), markings,
               boundaries);
+  if (steady)
+    std::printf("steady (%.0f ms): a centre circle in %ld frames as seen, %ld held; a junction in %ld as seen, %ld held\n",
+                *options.steady_ms, circle_seen, circle_steady, junctions_seen, junctions_steady);
   if (options.overlay_out) std::printf("overlay video written to %s\n", options.overlay_out->string().c_str());
   return 0;
 }

@@ -17,6 +17,7 @@ struct VideoOptions {
   long max_frames = -1;                       // stop after this many frames (-1: until the end)
   bool quiet = false;
   std::optional<GroundCamera> camera;         // a fixed camera over the turf (--camera)
+  std::optional<double> steady_ms;            // --steady: hold junctions and the circle this long
 };
 
 // Returns the exit code; throws fieldlines::Error when the source cannot be opened.

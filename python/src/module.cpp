@@ -7,6 +7,7 @@
 // calls are serialised by its own mutex (one detector per thread runs in parallel). The mutex
 // is only ever waited for with the GIL released, so holding it and taking the GIL cannot
 // deadlock.
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -25,6 +26,7 @@
 #include "fieldlines/data/image_io.hpp"
 #include "fieldlines/detect/camera_file.hpp"
 #include "fieldlines/detect/ground_features_json.hpp"
+#include "fieldlines/detect/steady_features.hpp"
 #include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
@@ -119,6 +121,13 @@ class Detector {
     const auto lock = lock_without_gil(mutex_);
     if (!camera_) return py::none();
     return to_python(nlohmann::json(to_json(detector_.ground_features())));
+  }
+
+  // The last detect()'s ground features through `steady` (SteadyFeatures::update).
+  py::dict steady_update(SteadyFeatures& steady, double time_ms, const GroundMotion& motion) {
+    const auto lock = lock_without_gil(mutex_);
+    if (!camera_) throw Error("steady features need the detector's camera (set LineDetector.camera first)");
+    return to_python(nlohmann::json(to_json(steady.update(detector_.ground_features(), time_ms, motion))));
   }
 
   py::array detect(const py::array& image) {
@@ -347,6 +356,27 @@ frame when the pose changes; a bad value raises ValueError and keeps the camera 
       .def("_time_detect", &Detector::time_detect, py::arg("image"), py::arg("repeat") = 1,
            "Milliseconds of each of `repeat` detect() calls timed in C++ (for python/bench.py).")
       .def("__repr__", [](Detector&) { return std::string("<fieldlines.LineDetector>"); });
+
+  py::class_<SteadyFeatures>(m, "SteadyFeatures", R"(Junctions and the centre circle held steady on the ground over a stream.
+
+A feature the detector misses for up to hold_ms is kept (its confidence fading with its age),
+moved by the robot's motion since; seen again, its position is smoothed with its track
+(smoothing: the new observation's weight). Keep one per camera; off by default on the robot.)")
+      .def(py::init([](double hold_ms, double match_m, double circle_match_m, double smoothing) {
+             return new SteadyFeatures({hold_ms, match_m, circle_match_m, smoothing});
+           }),
+           py::arg("hold_ms") = 80.0, py::arg("match_m") = 0.3, py::arg("circle_match_m") = 0.5,
+           py::arg("smoothing") = 0.5)
+      .def(
+          "update",
+          [](SteadyFeatures& self, Detector& detector, double time_ms, std::array<double, 3> motion) {
+            return detector.steady_update(self, time_ms, {motion[0], motion[1], motion[2]});
+          },
+          py::arg("detector"), py::arg("time_ms"), py::arg("motion") = std::array<double, 3>{0, 0, 0},
+          R"(The steady ground features after `detector`'s last detect() at time_ms, the robot having
+moved by motion = (dx, dy, dyaw) (metres, radians; in the last frame's ground frame) since the
+last call: the same dict as LineDetector.ground_features(). ValueError without a camera.)")
+      .def("reset", &SteadyFeatures::reset, "Forget every track (a new stream).");
 
   m.def("load_thresholds_file", [](const fs::path& path) { return thresholds_dict(load_file(path)); },
         py::arg("path"), "A thresholds file as a dict (validated; OSError if unreadable, ValueError if malformed).");

@@ -3,6 +3,7 @@
 import math
 
 import numpy as np
+import pytest
 
 import fieldlines
 
@@ -115,3 +116,25 @@ def test_a_bad_camera_is_refused_and_the_old_one_kept():
         else:
             raise AssertionError(f"accepted {bad}")
     assert detector.camera == CAMERA
+
+
+def test_steady_features_hold_the_circle_over_a_missed_frame():
+    detector = with_features(True)
+    detector.camera = CAMERA
+    steady = fieldlines.SteadyFeatures(hold_ms=80)
+    frame = circle_arc_frame()
+    turf = np.empty_like(frame)
+    turf[:] = frame[-1, 0]
+    detector.detect(frame)
+    assert len(steady.update(detector, 0.0)["ellipses"]) == 1
+    detector.detect(turf)
+    assert detector.ground_features()["ellipses"] == []
+    # Missed 33 ms later, held; the robot stepped 0.1 m ahead, so the circle is 0.1 m nearer.
+    held = steady.update(detector, 33.0, motion=(0.1, 0.0, 0.0))["ellipses"]
+    assert len(held) == 1
+    assert abs(held[0]["center"]["position"]["x"] - 0.7) < 0.05, held
+    assert steady.update(detector, 200.0)["ellipses"] == [], "older than the hold"
+    with pytest.raises(ValueError):
+        fieldlines.SteadyFeatures(smoothing=0)
+    with pytest.raises(ValueError):
+        steady.update(with_features(True), 300.0)  # no camera
