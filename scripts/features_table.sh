@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The field features (junctions, centre circle, field boundary, stripe centre lines) scored on
 # synthetic frames whose truth comes from their field and camera (fieldlines eval --gt
-# --features), as one Markdown table on stdout. Per scene, 40 frames in all five lights per
+# --features), as Markdown tables on stdout. Per scene, 40 frames in all five lights per
 # seed; thresholds built in, or calibrated label-free on seed 1. Seeds 4242 and 777 are held
 # out from tuning the stages; 9001 and 9002 were scored once, on a finished build. Every stage on,
 # then without the centre circle (the junctions from the detector's own drawing alone). A row
 # counts paint from 0.5 px wide as visible instead of 1 px (--min-width); the last rows give the
-# detector each frame's camera (the circle also fitted on the turf).
+# detector each frame's camera (the circle also fitted on the turf, junctions checked square on
+# it); a second table scores the features on the ground with that camera.
 #   usage: bash scripts/features_table.sh [OUT_DIR]      (default build/features-table)
 #   env:   FIELDLINES_BIN (default build/release/app/cli/fieldlines), N (frames per set, 40)
 set -euo pipefail
@@ -36,12 +37,19 @@ PY
 without_circle assets/default_thresholds.json "$out/builtin_lines.json"
 for scene in ssl kid; do without_circle "$out/${scene}_cal.json" "$out/${scene}_cal_lines.json"; done
 
+# The pooled line of eval's N-th table (1 edges, 2 features, 3 features on the ground).
+pooled() {
+  local table="$1"
+  shift
+  "$bin" eval "$@" --markdown | grep '^| all | all |' | sed -n "${table}p"
+}
+
 # One row: the pooled line of eval's features table, after the row's own columns (the eval
 # arguments choose the stages: --features, or a thresholds file's).
 row() {
   local label="$1"
   shift
-  "$bin" eval "$@" --markdown | tail -1 |
+  pooled 2 "$@" |
     awk -F'|' -v label="$label" '{printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
       label, $4, $5, $6, $7, $8, $9, $11, $12, $13}' | sed 's/  */ /g'
 }
@@ -72,6 +80,29 @@ for pair in "4242 777 held out" "9001 9002 fresh"; do
   for error in "exactly|" "within 1 deg and 5 %|1,0.05" "within 2 deg and 10 %|2,0.1"; do
     IFS='|' read -r what amount <<<"$error"
     row "seeds $a + $b ($kind) | every stage, camera known $what | built-in | both" \
+      --gt "$out/ssl_$a" "$out/ssl_$b" "$out/kid_$a" "$out/kid_$b" --features --truth-camera \
+      ${amount:+--camera-error "$amount"}
+  done
+done
+
+# The features on the ground with the camera known (eval --truth-camera's third table): each
+# matched junction's error over its true distance, and the centre circle's centre error on the
+# turf where it lies within 4 m.
+ground_row() {
+  local label="$1"
+  shift
+  pooled 3 "$@" |
+    awk -F'|' -v label="$label" '{printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
+      label, $4, $5, $6, $7, $8, $9, $10, $11}' | sed 's/  */ /g'
+}
+echo
+echo "| frames | camera given | junctions matched | their median distance m | ground error median % | 90th percentile % | within 5 % | circles within 4 m found on the ground | centre error median cm | within 10 cm |"
+echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+for pair in "4242 777 held out" "9001 9002 fresh"; do
+  read -r a b kind <<<"$pair"
+  for error in "exactly|" "within 1 deg and 5 %|1,0.05" "within 2 deg and 10 %|2,0.1"; do
+    IFS='|' read -r what amount <<<"$error"
+    ground_row "seeds $a + $b ($kind) | $what" \
       --gt "$out/ssl_$a" "$out/ssl_$b" "$out/kid_$a" "$out/kid_$b" --features --truth-camera \
       ${amount:+--camera-error "$amount"}
   done
