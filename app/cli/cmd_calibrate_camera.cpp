@@ -14,12 +14,11 @@
 #include "app/cli/output_file.hpp"
 #include "app/cli/progress.hpp"
 #include "app/cli/subcommand.hpp"
-#include "fieldlines/data/image_io.hpp"
 #include "fieldlines/detect/camera_file.hpp"
-#include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
 #include "fieldlines/train/camera_fit.hpp"
+#include "fieldlines/train/frame_lines.hpp"
 
 namespace fieldlines::cli {
 namespace {
@@ -68,7 +67,7 @@ struct Frames {
 };
 
 // Each readable image's stripes, with a progress bar; unreadable ones reported and counted.
-Frames detect_frames(const std::vector<std::string>& paths, LineDetector& detector, bool quiet) {
+Frames detect_frames(const std::vector<std::string>& paths, FrameLinesDetector& detector, bool quiet) {
   const ImageInputs inputs = expand_image_inputs(paths);
   Frames out;
   Progress progress("calibrate-camera", inputs.images.size(), stderr,
@@ -77,12 +76,9 @@ Frames detect_frames(const std::vector<std::string>& paths, LineDetector& detect
     progress.message("fieldlines calibrate-camera: " + f.error);
     ++out.failed;
   }
-  std::vector<Segment> segments;
   for (const fs::path& image : inputs.images) {
     try {
-      const cv::Mat frame = load_image(image);
-      detector.detect(frame, segments);
-      out.lines.push_back({detector.features().markings, frame.cols, frame.rows, image.filename().string()});
+      out.lines.push_back(detector.detect(image));
     } catch (const Error& e) {
       progress.message("fieldlines calibrate-camera: " + std::string(e.what()));
       ++out.failed;
@@ -158,10 +154,9 @@ int cmd_calibrate_camera(const Args& args) {
   const GroundCamera start = load_camera_file(*camera_path);
   ThresholdsFile config;
   if (const auto t = a.value("--thresholds")) config = load_thresholds_file(*t);
-  config.detector.stripes = true;
   const bool quiet = a.flag("--quiet");
 
-  LineDetector detector(config.detector, config.thresholds);
+  FrameLinesDetector detector(config.detector, config.thresholds);  // stripes on
   const Frames frames = detect_frames(a.positionals(), detector, quiet);
   if (frames.lines.empty()) throw Error("no readable frame among the inputs");
   const CameraFit fit = fit_camera(frames.lines, start, params);
