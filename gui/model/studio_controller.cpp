@@ -338,6 +338,11 @@ std::string StudioController::finish_saves() {
 
 // ---------------------------------------------------------------- background jobs
 
+void StudioController::set_camera(const std::optional<GroundCamera>& camera) {
+  if (camera) validate(*camera);
+  options_.camera = camera;
+}
+
 void StudioController::detect_all(bool only_undetected) {
   detection_.start(project_, project_file_, only_undetected, options_.camera);
 }
@@ -425,6 +430,7 @@ bool StudioController::apply_training_result() {
 
 void StudioController::poll(double now_s) {
   training_.poll();
+  camera_fit_.poll();
   take_saves(saver_.poll());
   if (const auto retrained = live_.poll()) adopt_auto_train(*retrained);
   if (settings_dirty_) {

@@ -13,6 +13,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "gui/model/auto_train.hpp"
+#include "gui/model/camera_fit_job.hpp"
 #include "gui/model/class_switch.hpp"
 #include "gui/model/project_detection.hpp"
 #include "gui/model/project_saver.hpp"
@@ -158,6 +159,13 @@ class StudioController {
   // Mean detector time over the project's detected images.
   double mean_detect_ms() const;
 
+  // --- the robot's camera (the Camera tab): detections started from now on fit the centre
+  // circle on the turf with it; features already detected keep the camera they had.
+  const std::optional<GroundCamera>& camera() const { return options_.camera; }
+  void set_camera(const std::optional<GroundCamera>& camera);  // throws fieldlines::Error when invalid
+  CameraFitJob& camera_fit() { return camera_fit_; }  // camera_fit_job.hpp: fit from the lines
+  const CameraFitJob& camera_fit() const { return camera_fit_; }
+
   // --- review loop (gui/model/review.cpp): proposals, one-key accept, uncertain first
   // Proposes a label for every segment of the project (fieldlines/train/review.hpp: label-free
   // until a class has enough labels, then trained on them), kept as the project's proposals
@@ -269,6 +277,7 @@ class StudioController {
   ProjectSaver saver_;  // before the jobs: they are stopped first, then the last save finishes
   ProjectDetection detection_;
   TrainingJob training_;
+  CameraFitJob camera_fit_;
   std::optional<Thresholds> proposal_thresholds_;  // what the proposals were made with
   std::string proposal_summary_;
   std::optional<std::size_t> focus_request_;
