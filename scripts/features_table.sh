@@ -37,22 +37,19 @@ PY
 without_circle assets/default_thresholds.json "$out/builtin_lines.json"
 for scene in ssl kid; do without_circle "$out/${scene}_cal.json" "$out/${scene}_cal_lines.json"; done
 
-# The pooled line of eval's N-th table (1 edges, 2 features, 3 features on the ground).
-pooled() {
-  local table="$1"
-  shift
-  "$bin" eval "$@" --markdown | grep '^| all | all |' | sed -n "${table}p"
+# One row: LABEL, then columns COLUMNS of the pooled line of eval's table TABLE (1 edges, 2
+# features, 3 features on the ground); the eval arguments choose the stages (--features, or a
+# thresholds file's).
+table_row() {
+  local table="$1" columns="$2" label="$3"
+  shift 3
+  "$bin" eval "$@" --markdown | grep '^| all | all |' | sed -n "${table}p" |
+    awk -F'|' -v label="$label" -v columns="$columns" '{
+      n = split(columns, c, " "); line = "| " label
+      for (k = 1; k <= n; ++k) line = line " | " $c[k]
+      print line " |" }' | sed 's/  */ /g'
 }
-
-# One row: the pooled line of eval's features table, after the row's own columns (the eval
-# arguments choose the stages: --features, or a thresholds file's).
-row() {
-  local label="$1"
-  shift
-  pooled 2 "$@" |
-    awk -F'|' -v label="$label" '{printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
-      label, $4, $5, $6, $7, $8, $9, $11, $12, $13}' | sed 's/  */ /g'
-}
+row() { table_row 2 "4 5 6 7 8 9 11 12 13" "$@"; }
 
 echo "| frames | stages | thresholds | scene | true junctions | detected | precision | recall | type correct | circles found | wrong ellipses | boundary within 4 px | markings on line |"
 echo "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
@@ -88,13 +85,7 @@ done
 # The features on the ground with the camera known (eval --truth-camera's third table): each
 # matched junction's error over its true distance, and the centre circle's centre error on the
 # turf where it lies within 4 m.
-ground_row() {
-  local label="$1"
-  shift
-  pooled 3 "$@" |
-    awk -F'|' -v label="$label" '{printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
-      label, $4, $5, $6, $7, $8, $9, $10, $11}' | sed 's/  */ /g'
-}
+ground_row() { table_row 3 "4 5 6 7 8 9 10 11" "$@"; }
 echo
 echo "| frames | camera given | junctions matched | their median distance m | ground error median % | 90th percentile % | within 5 % | circles within 4 m found on the ground | centre error median cm | within 10 cm |"
 echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
