@@ -71,30 +71,34 @@ row "seeds 4242 + 777, paint from 0.5 px visible | every stage | built-in | both
   --gt "$out/ssl_4242" "$out/ssl_777" "$out/kid_4242" "$out/kid_777" --min-width 0.5 --features
 # The camera known (eval --truth-camera): the centre circle also fitted on the turf, with each
 # frame's camera exactly, or off as a robot's pose estimate is (pitch and roll by up to 1 or 2
-# degrees, height by up to 5 or 10 %, drawn per frame).
-for pair in "4242 777 held out" "9001 9002 fresh"; do
-  read -r a b kind <<<"$pair"
-  for error in "exactly|" "within 1 deg and 5 %|1,0.05" "within 2 deg and 10 %|2,0.1"; do
-    IFS='|' read -r what amount <<<"$error"
-    row "seeds $a + $b ($kind) | every stage, camera known $what | built-in | both" \
-      --gt "$out/ssl_$a" "$out/ssl_$b" "$out/kid_$a" "$out/kid_$b" --features --truth-camera \
-      ${amount:+--camera-error "$amount"}
+# degrees, height by up to 5 or 10 %, drawn per frame). EMIT SEEDS WHAT EVAL-ARGS... per case.
+each_camera_case() {
+  local emit="$1" pair error a b kind what amount
+  for pair in "4242 777 held out" "9001 9002 fresh"; do
+    read -r a b kind <<<"$pair"
+    for error in "exactly|" "within 1 deg and 5 %|1,0.05" "within 2 deg and 10 %|2,0.1"; do
+      IFS='|' read -r what amount <<<"$error"
+      "$emit" "seeds $a + $b ($kind)" "$what" --gt "$out/ssl_$a" "$out/ssl_$b" "$out/kid_$a" "$out/kid_$b" \
+        --features --truth-camera ${amount:+--camera-error "$amount"}
+    done
   done
-done
+}
+camera_row() {
+  local seeds="$1" what="$2"
+  shift 2
+  row "$seeds | every stage, camera known $what | built-in | both" "$@"
+}
+each_camera_case camera_row
 
 # The features on the ground with the camera known (eval --truth-camera's third table): each
 # matched junction's error over its true distance, and the centre circle's centre error on the
 # turf where it lies within 4 m.
-ground_row() { table_row 3 "4 5 6 7 8 9 10 11" "$@"; }
+ground_row() {
+  local seeds="$1" what="$2"
+  shift 2
+  table_row 3 "4 5 6 7 8 9 10 11" "$seeds | $what" "$@"
+}
 echo
 echo "| frames | camera given | junctions matched | their median distance m | ground error median % | 90th percentile % | within 5 % | circles within 4 m found on the ground | centre error median cm | within 10 cm |"
 echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
-for pair in "4242 777 held out" "9001 9002 fresh"; do
-  read -r a b kind <<<"$pair"
-  for error in "exactly|" "within 1 deg and 5 %|1,0.05" "within 2 deg and 10 %|2,0.1"; do
-    IFS='|' read -r what amount <<<"$error"
-    ground_row "seeds $a + $b ($kind) | $what" \
-      --gt "$out/ssl_$a" "$out/ssl_$b" "$out/kid_$a" "$out/kid_$b" --features --truth-camera \
-      ${amount:+--camera-error "$amount"}
-  done
-done
+each_camera_case ground_row
