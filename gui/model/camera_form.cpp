@@ -68,6 +68,13 @@ void CameraForm::start_typical(StudioController& controller) {
   });
 }
 
+void CameraForm::apply_fit(StudioController& controller) {
+  act([&] {
+    if (!apply_camera_fit(controller)) throw Error("no fitted camera to apply");
+    return std::string("applied the fitted camera: save it to keep it, re-detect to use it");
+  });
+}
+
 CameraFitParams CameraForm::fit_params() const {
   CameraFitParams params;
   if (line_width_cm > 0) params.line_width_m = line_width_cm / 100.0;

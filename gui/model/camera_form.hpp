@@ -35,6 +35,8 @@ class CameraForm {
   void load(StudioController& controller);
   // The typical camera for the current image (camera_tuning.hpp), to nudge from.
   void start_typical(StudioController& controller);
+  // Adopts the finished fit (camera_fit_job.hpp's apply_camera_fit) and says what is next.
+  void apply_fit(StudioController& controller);
   const std::string& message() const { return message_; }
   bool failed() const { return failed_; }
 

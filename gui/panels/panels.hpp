@@ -21,6 +21,11 @@ void draw_train_panel(studio::StudioController& controller, UiState& ui);
 void draw_auto_train(studio::StudioController& controller);
 void draw_metrics_panel(studio::StudioController& controller, UiState& ui);
 void draw_export_panel(studio::StudioController& controller, UiState& ui);
+// The Camera tab (camera_panel.cpp), and the ground grid it puts over the canvas (between
+// `canvas_min` and `canvas_max`, screen px) while the tab is open.
+void draw_camera_panel(studio::StudioController& controller);
+void draw_camera_overlay(const studio::StudioController& controller, const studio::ViewTransform& view,
+                         ImVec2 canvas_min, ImVec2 canvas_max);
 
 // A "(?)" whose tooltip, `text`, opens above it: help that never covers what follows it.
 void help_marker(const char* text);
