@@ -24,6 +24,10 @@ std::vector<std::string> fit_summary(const CameraFitResult& r) {
   std::snprintf(line, sizeof line, "roll %.2f -> %.2f deg (sd %.2f)", from.roll_rad / kDeg, to.roll_rad / kDeg,
                 r.fit.roll_sd_deg);
   out.emplace_back(line);
+  if (to.fx != from.fx || to.fy != from.fy) {  // a fit that scales the focal lengths too
+    std::snprintf(line, sizeof line, "fx %.1f -> %.1f, fy %.1f -> %.1f px", from.fx, to.fx, from.fy, to.fy);
+    out.emplace_back(line);
+  }
   if (r.fit.height_fitted)
     std::snprintf(line, sizeof line, "height %.3f -> %.3f m (from %d stripes' widths)", from.height_m, to.height_m,
                   r.fit.widths_used);

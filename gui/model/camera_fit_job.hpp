@@ -29,7 +29,8 @@ struct CameraFitResult {
   std::size_t unreadable = 0;  // images that could not be read (left out)
 };
 
-// The result for the tab, before -> after: "pitch 33.00 -> 30.02 deg", "roll ...", "height
+// The result for the tab, before -> after: "pitch 33.00 -> 30.02 deg", "roll ...", "fx 640.0
+// -> 643.2, fy ..." when the fit scaled the focal lengths, "height
 // 0.600 -> 0.612 m" or "height 0.600 m kept (no line width)", "residual 2.41 -> 0.18 deg RMS,
 // 96 % of the lines' weight fits", "31 lines in 6 of 6 frames (1 unreadable)".
 std::vector<std::string> fit_summary(const CameraFitResult& result);

@@ -42,7 +42,7 @@ class CameraForm {
 
   bool show_grid = true;     // the ground grid over the frame while the tab is open
   GridParams grid;
-  float top_view_range_m = 6;
+  float top_view_range_m = 4;
   float line_width_cm = 0;   // the painted width for the fit's height; 0: the height is kept
   // The fit's parameters from the form (the line width when one is given).
   CameraFitParams fit_params() const;

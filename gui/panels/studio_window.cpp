@@ -91,11 +91,12 @@ void draw_status_bar(const studio::StudioController& controller, const UiState& 
   fitted_text(joined, room(), severity_colour(notes.front().severity), notes);
 }
 
-// A side panel tab whose label has 2 px of padding either side instead of the style's 4: seven
-// tabs then fit the 400 px panel even beside its scroll bar (ImGui would squeeze them otherwise,
-// cutting their names).
+// Side panel tabs have 2 px of padding either side of their labels instead of the style's 4:
+// seven tabs then fit the 400 px panel even beside its scroll bar (ImGui would squeeze them
+// otherwise, cutting their names).
+constexpr float kTabPadding = 2;
 bool begin_tab(const char* label, ImGuiTabItemFlags flags = 0) {
-  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, {2, ImGui::GetStyle().FramePadding.y});
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, {kTabPadding, ImGui::GetStyle().FramePadding.y});
   const bool open = ImGui::BeginTabItem(label, nullptr, flags);
   ImGui::PopStyleVar();
   return open;
@@ -129,7 +130,12 @@ void draw_studio(studio::StudioController& controller, UiState& ui, const Canvas
   draw_image_view(controller, ui.image_view, texture, canvas_size);
   ImGui::SameLine();
   ImGui::BeginChild("side", {side_width, avail.y - status_height});
-  if (ImGui::BeginTabBar("panels")) {
+  // The bar draws its labels with the padding it was begun with, its tabs take theirs at
+  // begin_tab: both the narrow one.
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, {kTabPadding, ImGui::GetStyle().FramePadding.y});
+  const bool tabs = ImGui::BeginTabBar("panels");
+  ImGui::PopStyleVar();
+  if (tabs) {
     for (int p = 0; p < static_cast<int>(Panel::Count); ++p) {
       const Panel panel = static_cast<Panel>(p);
       const ImGuiTabItemFlags flags =
