@@ -21,7 +21,6 @@ void TurfColours::measure(const cv::Mat& bgr8, const Rgb& field, const TurfColou
   measured_ = false;
   if (bgr8.empty() || bgr8.type() != CV_8UC3) return;
   const float field_sum = std::max(field[0] + field[1] + field[2], 1.f);
-  const float lo = params.min_brightness * field_sum, hi = params.max_brightness * field_sum;
   counts_.fill(0);
   const FieldColourParams& s = params.sampling;
   const int row_step = std::max(s.row_step, 1), col_step = std::max(s.col_step, 1);
@@ -33,7 +32,7 @@ void TurfColours::measure(const cv::Mat& bgr8, const Rgb& field, const TurfColou
       const std::uint8_t* p = row + 3 * x;
       if (!s.green(p[0], p[1], p[2])) continue;
       const float sum = float(p[0] + p[1] + p[2]);
-      if (sum < lo || sum > hi) continue;
+      if (!params.brightness.contains(sum, field_sum)) continue;
       const int i = bin(p[2] / sum), j = bin(p[1] / sum);
       ++counts_[static_cast<std::size_t>(i * kBins + j)];
       ++samples;

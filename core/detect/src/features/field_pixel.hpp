@@ -41,7 +41,7 @@ class FieldPixel {
   bool field(const std::uint8_t* bgr) const {
     // The same value as the float sum of the three (exact either way): one conversion, not three.
     const float sum = float(bgr[0] + bgr[1] + bgr[2]);
-    if (sum < p_.min_brightness * sum_ || sum > p_.max_brightness * sum_) return false;
+    if (!p_.brightness.contains(sum, sum_)) return false;
     const float r = bgr[2] / sum, g = bgr[1] / sum;
     return std::abs(r - r_) + std::abs(g - g_) <= p_.chroma_tolerance || (turf_ && turf_->contains(r, g));
   }

@@ -36,7 +36,7 @@ struct FieldBoundaryParams {
   int min_gap_px = 8;          // ...and at least this long
   double min_columns = 0.25;   // columns with field needed, as a share: fewer is no boundary
   float chroma_tolerance = 0.07f;       // |r/s - r_f/s_f| + |g/s - g_f/s_f|, s = r + g + b
-  float min_brightness = 0.25f, max_brightness = 2.5f;  // s / s_f: shade to sun patch
+  TurfBrightness brightness;           // s / s_f: shade to sun patch
   int median_columns = 7;      // window of the filter over column tops (odd)
   float paint_brightness = 1.4f;     // paint: s / s_f at least this...
   float paint_chroma = 0.1f;         // ...and |r/s - 1/3| + |g/s - 1/3| at most this

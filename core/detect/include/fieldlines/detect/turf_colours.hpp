@@ -25,11 +25,19 @@
 
 namespace fieldlines {
 
+// How much darker or brighter than the field colour turf may be (R + G + B over the field
+// colour's): from shade to a sun patch. The field boundary's pixel test and the turf colours'
+// samples share it.
+struct TurfBrightness {
+  float min = 0.25f, max = 2.5f;
+  bool contains(float sum, float field_sum) const { return sum >= min * field_sum && sum <= max * field_sum; }
+};
+
 struct TurfColourParams {
   FieldColourParams sampling;  // the grid and the green test of the field colour's estimate
   float grow_share = 0.1f;     // a bin joins the turf with at least this share of the peak's count...
   float min_saturation = 0.75f;  // ...and |r - 1/3| + |g - 1/3| at least this share of the field colour's
-  float min_brightness = 0.25f, max_brightness = 2.5f;  // samples' R + G + B over the field colour's
+  TurfBrightness brightness;     // the samples taken
 };
 
 class TurfColours {
