@@ -177,8 +177,44 @@ TEST(CameraFit, RecoversPitchAndRollFromFiveDegreesOff) {
     EXPECT_GT(fit.rms_before_deg, 2 * fit.rms_after_deg) << what;
     EXPECT_GE(fit.frames_used, 8) << what;
     EXPECT_GE(fit.lines_used, 20) << what;
-    EXPECT_EQ(fit.camera.fx, start.fx);
+    // The start's focal length is right: the fit leaves it within a percent.
+    EXPECT_NEAR(fit.focal_scale, 1, 0.01) << what;
+    EXPECT_DOUBLE_EQ(fit.camera.fx, start.fx * fit.focal_scale);
+    EXPECT_EQ(fit.camera.cx, start.cx);
   }
+}
+
+TEST(CameraFit, FocalLengthKeptWhenItsSdIsZero) {
+  const Case& c = kCases[0];
+  const auto frames = frames_of(c.truth, 10, 907);
+  fl::GroundCamera start = camera_of(c.truth);
+  start.pitch_rad += c.pitch_off_deg * kDeg;
+  start.fx *= 1.02, start.fy *= 1.02;
+  fl::CameraFitParams kept;
+  kept.focal_sd = 0;
+  const fl::CameraFit fit = fl::fit_camera(frames, start, kept);
+  EXPECT_EQ(fit.camera.fx, start.fx);
+  EXPECT_EQ(fit.camera.fy, start.fy);
+  EXPECT_EQ(fit.focal_scale, 1);
+}
+
+// The fit's own sd decides: a set whose pose sd is above max_pose_sd_deg is refused, naming it.
+TEST(CameraFit, APoseTheLinesDoNotPinDownIsRefused) {
+  const Case& c = kCases[2];
+  const auto frames = frames_of(c.truth, 4, 911);
+  fl::GroundCamera start = camera_of(c.truth);
+  start.pitch_rad += c.pitch_off_deg * kDeg;
+  const auto at_most = [](double sd) {
+    fl::CameraFitParams params;
+    params.max_pose_sd_deg = sd;
+    return params;
+  };
+  const fl::CameraFit fit = fl::fit_camera(frames, start, at_most(5));
+  const double sd = std::max(fit.pitch_sd_deg, fit.roll_sd_deg);
+  ASSERT_GT(sd, 0);
+  EXPECT_NO_THROW(fl::fit_camera(frames, start, at_most(1.1 * sd)));
+  const std::string message = thrown(frames, start, at_most(0.9 * sd));
+  EXPECT_NE(message.find("do not pin the pose down"), std::string::npos) << message;
 }
 
 TEST(CameraFit, HeightFromTheLineWidth) {
@@ -209,6 +245,7 @@ double ray_pitch_deg(const fl::GroundCamera& camera, double u, double v) {
 // the true principal point, which the fitted camera must aim where the true one does.
 TEST(CameraFit, IntrinsicsAFewPercentOff) {
   std::uint64_t seed = 941;
+  double focal_error = 0;
   for (const Case& c : kCases) {
     const auto frames = frames_of(c.truth, 10, seed++);
     const fl::GroundCamera truth = camera_of(c.truth);
@@ -221,7 +258,9 @@ TEST(CameraFit, IntrinsicsAFewPercentOff) {
     EXPECT_NEAR(ray_pitch_deg(fit.camera, truth.cx, truth.cy), c.truth.pitch_deg, 0.3) << what;
     EXPECT_NEAR(fit.camera.roll_rad / kDeg, c.truth.roll_deg, 0.3) << what;
     EXPECT_NEAR(fit.camera.height_m, c.truth.height_m, 0.03) << what;
+    focal_error += std::abs(fit.camera.fx / truth.fx - 1) / std::size(kCases);
   }
+  EXPECT_LT(focal_error, 0.015) << "the focal lengths 2 % off: the fit brings them nearer the truth";
 }
 
 TEST(CameraFit, NoLinesIsRefused) {
@@ -279,6 +318,9 @@ TEST(CameraFit, BadParametersAreRefused) {
   fl::GroundCamera bad = camera_of({});
   bad.fx = 0;
   EXPECT_NE(thrown(frames, bad).find("focal"), std::string::npos);
+  fl::CameraFitParams negative;
+  negative.focal_sd = -0.01;
+  EXPECT_NE(thrown(frames, camera_of({}), negative).find("focal_sd"), std::string::npos);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/core/matx.hpp>
 #include <opencv2/core/types.hpp>
 
 #include "fieldlines/detect/error.hpp"
@@ -32,7 +33,15 @@ std::string fixed(double value, int decimals) {
 // A pitch and roll offset from the start camera, radians.
 struct Offset {
   double pitch = 0, roll = 0;
+  double focal = 0;  // the log of the focal lengths' scale (focal_sd)
 };
+
+// The start camera with its focal lengths scaled by exp(at.focal), turned by the offsets.
+GroundProjection projection(const GroundCamera& start, Offset at) {
+  GroundCamera camera = start;
+  camera.fx *= std::exp(at.focal), camera.fy *= std::exp(at.focal);
+  return GroundProjection(camera, at.pitch, at.roll);
+}
 
 // One usable line: its image ends and how well its ground heading is known (fixed when the
 // lines are chosen, so that no pose gains by making a line that does not fit look noisy).
@@ -118,7 +127,7 @@ void frame_residuals(const GroundProjection& g, std::span<const Line> lines, std
 
 std::vector<Residual> residuals(const FrameSet& set, const GroundCamera& start, Offset at,
                                 const CameraFitParams& params) {
-  const GroundProjection g(start, at.pitch, at.roll);
+  const GroundProjection g = projection(start, at);
   std::vector<Residual> out;
   for (std::size_t f = 0; f < set.size(); ++f) frame_residuals(g, set[f], f, params, out);
   return out;
@@ -129,6 +138,20 @@ double loss(const FrameSet& set, const GroundCamera& start, Offset at, const Cam
   double sum = 0;
   for (const Residual& r : residuals(set, start, at, params)) sum += robust_loss(r.angle, r.sd, params.loss_scale_sd);
   return sum;
+}
+
+// The focal scale's first step in Nelder-Mead (log scale: 1 %).
+constexpr double kFocalStep = 0.01;
+
+// The loss within the search (Nelder-Mead walks on where a few lines square a pose far off: on
+// one rendered SSL set to a roll 40 degrees wrong), with the focal scale's prior: its log off the
+// start's by focal_sd counts as a line off by its sd (the robust loss near zero is
+// (r / (scale sd))^2).
+double bounded_loss(const FrameSet& set, const GroundCamera& start, Offset at, const CameraFitParams& params) {
+  if (std::max(std::abs(at.pitch), std::abs(at.roll)) > params.search_deg * kDeg)
+    return std::numeric_limits<double>::infinity();
+  const double z = params.focal_sd > 0 ? at.focal / (params.loss_scale_sd * params.focal_sd) : 0;
+  return loss(set, start, at, params) + z * z;
 }
 
 // The RMS of the residuals in degrees, every line alike (what a user sees: how far the lines
@@ -173,19 +196,31 @@ double fitting_share(std::span<const Residual> rs, double scale) {
 // not pin the pose down (too few, in too few directions).
 std::array<double, 2> pose_sd(const FrameSet& set, const GroundCamera& start, Offset at, std::span<const Residual> rs,
                               const CameraFitParams& params) {
-  const double h = 0.01 * kDeg;
-  const auto r_pp = residuals(set, start, {at.pitch + h, at.roll}, params), r_pm = residuals(set, start, {at.pitch - h, at.roll}, params);
-  const auto r_rp = residuals(set, start, {at.pitch, at.roll + h}, params), r_rm = residuals(set, start, {at.pitch, at.roll - h}, params);
-  double a = 0, b = 0, c = 0;  // the information matrix [a b; b c]
+  const int n = params.focal_sd > 0 ? 3 : 2;
+  const std::array<double, 3> h{0.01 * kDeg, 0.01 * kDeg, 1e-4};
+  std::array<std::vector<double>, 3> jacobian;  // per parameter, per residual
+  for (int k = 0; k < n; ++k) {
+    Offset plus = at, minus = at;
+    (k == 0 ? plus.pitch : k == 1 ? plus.roll : plus.focal) += h[k];
+    (k == 0 ? minus.pitch : k == 1 ? minus.roll : minus.focal) -= h[k];
+    const auto rp = residuals(set, start, plus, params), rm = residuals(set, start, minus, params);
+    for (std::size_t i = 0; i < rs.size(); ++i) jacobian[k].push_back((rp[i].angle - rm[i].angle) / (2 * h[k]));
+  }
+  cv::Matx33d info = cv::Matx33d::zeros();
   for (std::size_t i = 0; i < rs.size(); ++i) {
     if (std::abs(rs[i].angle) > params.loss_scale_sd * rs[i].sd) continue;
-    const double jp = (r_pp[i].angle - r_pm[i].angle) / (2 * h), jr = (r_rp[i].angle - r_rm[i].angle) / (2 * h);
     const double w = 1 / (rs[i].sd * rs[i].sd);
-    a += w * jp * jp, b += w * jp * jr, c += w * jr * jr;
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c) info(r, c) += w * jacobian[r][i] * jacobian[c][i];
   }
-  const double det = a * c - b * b;
-  if (!(det > 1e-12 * (a * c))) return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-  return {std::sqrt(c / det), std::sqrt(a / det)};
+  // The focal scale's prior adds its own information; with the scale kept, a 1 leaves the pose's
+  // 2 x 2 block as it is.
+  info(2, 2) += n == 3 ? 1 / (params.focal_sd * params.focal_sd) : 1;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double scale = info(0, 0) * info(1, 1) * info(2, 2);
+  if (!(cv::determinant(info) > 1e-12 * scale)) return {kInf, kInf};
+  const cv::Matx33d cov = info.inv(cv::DECOMP_SVD);
+  return {std::sqrt(cov(0, 0)), std::sqrt(cov(1, 1))};
 }
 
 // The lines that reach the turf under `g`, per frame; a frame keeps its lines only when it has
@@ -243,42 +278,58 @@ bool sees_ground(const FrameLines& frame, const GroundProjection& g) {
   return false;
 }
 
-// Nelder-Mead on the two offsets, from `from` with a first step of `step` radians, until the
-// simplex is smaller than `tolerance`.
-Offset nelder_mead(const auto& f, Offset from, double step, double tolerance) {
+// Nelder-Mead on the offsets (pitch and roll, and the focal scale when `dims` is 3), from `from`
+// with first steps of `step` (radians; `focal_step` for the scale), until the simplex is smaller
+// than `tolerance`.
+Offset nelder_mead(const auto& f, Offset from, double step, double tolerance, int dims = 2, double focal_step = 0) {
+  using Point = std::array<double, 3>;
   struct Vertex {
-    Offset x;
+    Point x;
     double value;
   };
-  const auto at = [&](Offset x) { return Vertex{x, f(x)}; };
-  const auto mix = [](Offset a, Offset b, double t) {  // a + t (b - a)
-    return Offset{a.pitch + t * (b.pitch - a.pitch), a.roll + t * (b.roll - a.roll)};
+  const auto offset = [](const Point& x) { return Offset{x[0], x[1], x[2]}; };
+  const auto at = [&](const Point& x) { return Vertex{x, f(offset(x))}; };
+  const auto mix = [](const Point& a, const Point& b, double t) {  // a + t (b - a)
+    return Point{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
   };
-  std::array<Vertex, 3> s{at(from), at({from.pitch + step, from.roll}), at({from.pitch, from.roll + step})};
-  for (int iteration = 0; iteration < 400; ++iteration) {
+  const auto distance = [](const Point& a, const Point& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+  };
+  const auto n = static_cast<std::size_t>(dims);
+  std::vector<Vertex> s;
+  const Point origin{from.pitch, from.roll, from.focal};
+  s.push_back(at(origin));
+  for (std::size_t k = 0; k < n; ++k) {
+    Point x = origin;
+    x[k] += k < 2 ? step : focal_step;
+    s.push_back(at(x));
+  }
+  for (int iteration = 0; iteration < 600; ++iteration) {
     std::ranges::sort(s, {}, &Vertex::value);
-    const double size = std::max(std::hypot(s[1].x.pitch - s[0].x.pitch, s[1].x.roll - s[0].x.roll),
-                                 std::hypot(s[2].x.pitch - s[0].x.pitch, s[2].x.roll - s[0].x.roll));
+    double size = 0;
+    for (std::size_t k = 1; k <= n; ++k) size = std::max(size, distance(s[k].x, s[0].x));
     if (size < tolerance) break;
-    const Offset centre = mix(s[0].x, s[1].x, 0.5);
-    const Vertex reflected = at(mix(s[2].x, centre, 2));
+    Point centre{};
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t d = 0; d < 3; ++d) centre[d] += s[k].x[d] / static_cast<double>(n);
+    Vertex& worst = s[n];
+    const Vertex reflected = at(mix(worst.x, centre, 2));
     if (reflected.value < s[0].value) {
-      const Vertex expanded = at(mix(s[2].x, centre, 3));
-      s[2] = expanded.value < reflected.value ? expanded : reflected;
-    } else if (reflected.value < s[1].value) {
-      s[2] = reflected;
+      const Vertex expanded = at(mix(worst.x, centre, 3));
+      worst = expanded.value < reflected.value ? expanded : reflected;
+    } else if (reflected.value < s[n - 1].value) {
+      worst = reflected;
     } else {
-      const Vertex contracted = reflected.value < s[2].value ? at(mix(s[2].x, centre, 1.5)) : at(mix(s[2].x, centre, 0.5));
-      if (contracted.value < std::min(reflected.value, s[2].value)) {
-        s[2] = contracted;
+      const Vertex contracted = reflected.value < worst.value ? at(mix(worst.x, centre, 1.5)) : at(mix(worst.x, centre, 0.5));
+      if (contracted.value < std::min(reflected.value, worst.value)) {
+        worst = contracted;
       } else {
-        s[1] = at(mix(s[0].x, s[1].x, 0.5));
-        s[2] = at(mix(s[0].x, s[2].x, 0.5));
+        for (std::size_t k = 1; k <= n; ++k) s[k] = at(mix(s[0].x, s[k].x, 0.5));
       }
     }
   }
   std::ranges::sort(s, {}, &Vertex::value);
-  return s[0].x;
+  return offset(s[0].x);
 }
 
 // The same lines with every sd at least `sd`: a loss whose valleys are as wide as the grid's
@@ -305,7 +356,8 @@ Offset fit_offset(const FrameSet& set, const GroundCamera& start, const CameraFi
       if (const double v = f(x); v < best_value) best_value = v, best = x;
     }
   const Offset near = nelder_mead(f, best, step / 2, 1e-3 * kDeg);
-  return nelder_mead([&](Offset x) { return loss(set, start, x, params); }, near, step / 4, 1e-4 * kDeg);
+  return nelder_mead([&](Offset x) { return bounded_loss(set, start, x, params); }, near, step / 4, 1e-4 * kDeg,
+                     params.focal_sd > 0 ? 3 : 2, kFocalStep);
 }
 
 // The stripes' ground width across their middles at the start height: for each fitting line
@@ -358,6 +410,7 @@ void validate(const CameraFitParams& p) {
   check(std::isfinite(p.max_rms_deg) && p.max_rms_deg > 0, "max_rms_deg must be positive");
   check(p.min_frames >= 1, "min_frames must be at least 1");
   check(std::isfinite(p.max_pose_sd_deg) && p.max_pose_sd_deg > 0, "max_pose_sd_deg must be positive");
+  check(std::isfinite(p.focal_sd) && p.focal_sd >= 0 && p.focal_sd <= 0.2, "focal_sd must be in [0, 0.2]");
   check(std::isfinite(p.min_fitting_share) && p.min_fitting_share >= 0 && p.min_fitting_share <= 1,
         "min_fitting_share must be in [0, 1]");
   check(std::isfinite(p.min_direction_deg) && p.min_direction_deg > 0 && p.min_direction_deg <= 90,
@@ -402,17 +455,19 @@ CameraFit fit_camera(std::span<const FrameLines> frames, const GroundCamera& sta
   // The lines chosen at the start pose are fitted; those the fitted pose puts on the ground
   // (a start far off loses lines near the horizon) are fitted again from there.
   const Offset first = fit_offset(start_set, start, params);
-  const FrameSet set = usable_lines(frames, GroundProjection(start, first.pitch, first.roll), params);
+  const FrameSet set = usable_lines(frames, projection(start, first), params);
   if (count_lines(set) < 2 || count_frames(set) < params.min_frames)
     throw Error("too few lines: the fitted pose puts fewer than " + std::to_string(params.min_frames) +
                 " frames of two lines or more on the ground");
-  const auto f = [&](Offset x) { return loss(set, start, x, params); };
-  const Offset fitted = nelder_mead(f, first, params.grid_step_deg * kDeg / 4, 1e-4 * kDeg);
+  const auto f = [&](Offset x) { return bounded_loss(set, start, x, params); };
+  const Offset fitted = nelder_mead(f, first, params.grid_step_deg * kDeg / 4, 1e-4 * kDeg, params.focal_sd > 0 ? 3 : 2, kFocalStep);
 
   CameraFit fit;
   fit.camera = start;
   fit.camera.pitch_rad += fitted.pitch;
   fit.camera.roll_rad += fitted.roll;
+  fit.focal_scale = std::exp(fitted.focal);
+  fit.camera.fx *= fit.focal_scale, fit.camera.fy *= fit.focal_scale;
   fit.rms_before_deg = trimmed_rms_deg(residuals(start_set, start, {}, params), params.trim_fraction);
   const std::vector<Residual> after = residuals(set, start, fitted, params);
   fit.rms_after_deg = trimmed_rms_deg(after, params.trim_fraction);
@@ -454,7 +509,7 @@ CameraFit fit_camera(std::span<const FrameLines> frames, const GroundCamera& sta
                 "); more frames, with long lines in two directions, would");
   }
 
-  const std::vector<double> widths = ground_widths(set, GroundProjection(start, fitted.pitch, fitted.roll), after, params);
+  const std::vector<double> widths = ground_widths(set, projection(start, fitted), after, params);
   fit.widths_used = static_cast<int>(widths.size());
   if (!widths.empty()) fit.median_width_m = median(widths);
   if (params.line_width_m) {

@@ -11,7 +11,9 @@
 // The pitch and roll that minimise the residuals of all frames together are the fit: a coarse
 // grid around the start, then Nelder-Mead, under a robust (bounded) loss so that the few
 // detections that are not straight field lines (chords of the centre circle, a robot's white
-// bar) do not pull. The height does not change a direction: it scales every ground distance, so
+// bar) do not pull. The focal lengths' scale is fitted with the pose, under a prior (focal_sd):
+// a focal length a little off bends the lines far from the image centre, which a pose alone
+// would take up in the pitch. The height does not change a direction: it scales every ground distance, so
 // the painted width, when known, gives it (the median ground width of the stripes, measured
 // across each at its middle, against the width the rules paint).
 //
@@ -56,14 +58,21 @@ struct CameraFitParams {
   double max_rms_deg = 3;
   double min_fitting_share = 0.8;
   // The fitted pitch's and roll's sd (from the lines' sds and how their residuals change with
-  // the pose) above this: the lines do not pin the pose down, refused.
-  double max_pose_sd_deg = 1;
+  // the pose) above this: the lines do not pin the pose down, refused. The sd is that for 1 px
+  // on the lines' ends, and the detector's ends stray by less: measured, the errors stay within
+  // about 0.6 of it, so 0.5 keeps a fitted pose within about 0.3 degrees.
+  double max_pose_sd_deg = 0.5;
   // Frames of two usable lines or more needed: the few lines of one or two frames can be
   // squared by poses far apart (a wrong pose with a small sd).
   int min_frames = 3;
   double min_direction_deg = 10;  // two image lines this far apart make two directions
   std::optional<double> line_width_m;  // the painted width: the height from the stripes' widths
   double min_width_px = 3;        // thinner stripes have no say in the height (blur, pixels)
+  // How far off the start's focal lengths may be, as a share (its sd): the fit scales fx and fy
+  // too, with this prior. A focal length 2 % off bends the ground directions of lines far from
+  // the image centre, and a pose alone squares them with the pitch some 0.2 degrees off; the
+  // lines of frames that show both field directions tell the scale. 0: the focal lengths kept.
+  double focal_sd = 0.02;
 };
 
 // Throws fieldlines::Error naming the value when a parameter is out of range (not finite,
@@ -71,7 +80,7 @@ struct CameraFitParams {
 void validate(const CameraFitParams& params);
 
 struct CameraFit {
-  GroundCamera camera;            // the start's intrinsics with the fitted pitch, roll, height
+  GroundCamera camera;            // the start's principal point with the fitted focal, pitch, roll, height
   double rms_before_deg = 0;      // RMS of the residuals at the start pose (trim_fraction left out)
   double rms_after_deg = 0;       // the same at the fitted pose
   int frames_used = 0;            // frames with at least two usable lines
@@ -81,6 +90,7 @@ struct CameraFit {
   double fitting_share = 0;
   std::vector<double> frame_fitting_share;
   double pitch_sd_deg = 0, roll_sd_deg = 0;  // the fit's uncertainty for 1 px of noise on the ends
+  double focal_scale = 1;         // the fitted fx and fy over the start's (1 when focal_sd is 0)
   bool height_fitted = false;     // true: from line_width_m; false: the start's height kept
   double median_width_m = 0;      // the stripes' median ground width at the start height (0: none)
   int widths_used = 0;            // stripes that measured it
