@@ -18,7 +18,7 @@ bool is_modifier(int key) { return key >= GLFW_KEY_LEFT_SHIFT && key <= GLFW_KEY
 static_assert(static_cast<int>(studio::Key::M) == GLFW_KEY_M && static_cast<int>(studio::Key::Z) == GLFW_KEY_Z);
 static_assert(static_cast<int>(studio::Key::B) == GLFW_KEY_B && static_cast<int>(studio::Key::Y) == GLFW_KEY_Y);
 static_assert(static_cast<int>(studio::Key::Left) == GLFW_KEY_LEFT && static_cast<int>(studio::Key::Right) == GLFW_KEY_RIGHT);
-static_assert(static_cast<int>(studio::Key::F1) == GLFW_KEY_F1 && static_cast<int>(studio::Key::F6) == GLFW_KEY_F6);
+static_assert(static_cast<int>(studio::Key::F1) == GLFW_KEY_F1 && static_cast<int>(studio::Key::F7) == GLFW_KEY_F7);
 static_assert(static_cast<int>(studio::Key::Enter) == GLFW_KEY_ENTER && static_cast<int>(studio::Key::Tab) == GLFW_KEY_TAB);
 static_assert(static_cast<int>(studio::Key::P) == GLFW_KEY_P && static_cast<int>(studio::Key::Space) == GLFW_KEY_SPACE);
 static_assert(static_cast<int>(studio::Key::G) == GLFW_KEY_G && static_cast<int>(studio::Key::I) == GLFW_KEY_I);

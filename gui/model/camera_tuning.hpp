@@ -126,4 +126,12 @@ struct TopViewDrawing {
 void build_top_view(const GroundFeatures& ground, const GroundCamera& camera, int width, int height, const TopView& view,
                     TopViewDrawing& out);
 
+// What the Camera tab draws each frame, kept between frames so drawing allocates nothing once
+// warm: the frame's features on the ground, the top view's primitives, the grid's lines.
+struct CameraViewBuffers {
+  GroundFeatures ground;
+  TopViewDrawing top_view;
+  GroundGrid grid;
+};
+
 }  // namespace fieldlines::studio

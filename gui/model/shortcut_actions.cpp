@@ -4,7 +4,7 @@
 
 namespace fieldlines::studio {
 
-static_assert(static_cast<int>(Panel::Count) == 6, "the shortcut table's tabs are F1..F6");
+static_assert(static_cast<int>(Panel::Count) == 7, "the shortcut table's tabs are F1..F7");
 
 void run_shortcut(const Shortcut& shortcut, StudioController& controller, UiState& ui) {
   switch (shortcut.action) {

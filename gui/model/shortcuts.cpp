@@ -41,6 +41,7 @@ constexpr std::array kShortcuts{
     Shortcut{key(Key::F4), Action::ShowTab, "Train tab", {}, 3},
     Shortcut{key(Key::F5), Action::ShowTab, "Metrics tab", {}, 4},
     Shortcut{key(Key::F6), Action::ShowTab, "Export tab", {}, 5},
+    Shortcut{key(Key::F7), Action::ShowTab, "Camera tab", {}, 6},
     Shortcut{ctrl(Key::Q), Action::Quit, "quit"},
 };
 

@@ -20,7 +20,7 @@ enum class Key : int {
   Y = 'Y', Z = 'Z',
   Space = ' ',
   Enter = 257, Tab = 258, Right = 262, Left = 263,
-  F1 = 290, F2, F3, F4, F5, F6,
+  F1 = 290, F2, F3, F4, F5, F6, F7,
 };
 
 struct Chord {

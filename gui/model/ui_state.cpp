@@ -10,6 +10,7 @@ const char* panel_name(Panel panel) {
     case Panel::Train: return "Train";
     case Panel::Metrics: return "Metrics";
     case Panel::Export: return "Export";
+    case Panel::Camera: return "Camera";
     case Panel::Count: break;
   }
   return "?";

@@ -26,14 +26,6 @@ const ImVec4 kWarningColour{1, 0.7f, 0.3f, 1};
 ImVec2 im(studio::Vec2 v) { return {v.x, v.y}; }
 ImU32 colour(studio::Rgba c) { return IM_COL32(c.r, c.g, c.b, c.a); }
 
-// The tab's form lives as long as the window: one studio window, one Camera tab (its path and
-// flags carry over when another project is opened, as the view settings do).
-studio::CameraForm& camera_form() {
-  static studio::CameraForm form;
-  return form;
-}
-int g_tab_frame = -1;  // the ImGui frame the tab was last drawn in: the grid shows while it is open
-
 // -/+ buttons of one step (Ctrl: the fast step); true when the value changed.
 bool nudge(const char* label, double& value, double step, double fast, const char* format) {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
@@ -58,7 +50,8 @@ void draw_pose(studio::StudioController& controller, const GroundCamera& camera)
   if (!note.empty()) wrapped_text(kWarningColour, note);
 }
 
-void draw_top_view(const studio::StudioController& controller, const GroundCamera& camera, studio::CameraForm& form) {
+void draw_top_view(const studio::StudioController& controller, const GroundCamera& camera, studio::CameraForm& form,
+                   studio::CameraViewBuffers& buffers) {
   ImGui::TextUnformatted("Top view (metres, the camera's foot at the bottom)");
   ImGui::SameLine();
   help_marker("The current frame's features on the turf through this camera: stripes' centre lines,\n"
@@ -71,10 +64,9 @@ void draw_top_view(const studio::StudioController& controller, const GroundCamer
   const ImVec2 at = ImGui::GetCursorScreenPos();
   ImGui::Dummy(size);
   const studio::TopView view({{at.x, at.y}, {at.x + size.x, at.y + size.y}}, form.top_view_range_m);
-  static GroundFeatures ground;              // UI thread only; reused so a frame allocates nothing
-  static studio::TopViewDrawing drawing;
-  project_features(controller.field_features(), camera, {}, ground);
-  studio::build_top_view(ground, camera, controller.image().cols, controller.image().rows, view, drawing);
+  studio::TopViewDrawing& drawing = buffers.top_view;
+  project_features(controller.field_features(), camera, {}, buffers.ground);
+  studio::build_top_view(buffers.ground, camera, controller.image().cols, controller.image().rows, view, drawing);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->PushClipRect(at, {at.x + size.x, at.y + size.y}, true);
   draw->AddRectFilled(at, {at.x + size.x, at.y + size.y}, IM_COL32(20, 45, 25, 255));
@@ -152,9 +144,8 @@ void draw_file(studio::StudioController& controller, studio::CameraForm& form) {
 
 }  // namespace
 
-void draw_camera_panel(studio::StudioController& controller) {
-  g_tab_frame = ImGui::GetFrameCount();
-  studio::CameraForm& form = camera_form();
+void draw_camera_panel(studio::StudioController& controller, UiState& ui) {
+  studio::CameraForm& form = ui.camera_form;
   form.update(controller);
   const std::optional<GroundCamera>& camera = controller.camera();
   if (!camera) {
@@ -177,7 +168,7 @@ void draw_camera_panel(studio::StudioController& controller) {
     help_marker("Detection fits the centre circle on the turf with the camera it was started with;\n"
                 "after a nudge or a fit, re-detect so the features use the new one.");
     ImGui::Separator();
-    draw_top_view(controller, *camera, form);
+    draw_top_view(controller, *camera, form, ui.camera_view);
   }
   ImGui::Separator();
   draw_fit(controller, form);
@@ -185,11 +176,13 @@ void draw_camera_panel(studio::StudioController& controller) {
   draw_file(controller, form);
 }
 
-void draw_camera_overlay(const studio::StudioController& controller, const studio::ViewTransform& view,
-                         ImVec2 canvas_min, ImVec2 canvas_max) {
-  const studio::CameraForm& form = camera_form();
-  if (g_tab_frame != ImGui::GetFrameCount() || !form.show_grid || !controller.camera()) return;
-  static studio::GroundGrid grid;  // UI thread only; reused so a frame allocates nothing
+void draw_camera_overlay(const studio::StudioController& controller, UiState& ui, ImVec2 canvas_min,
+                         ImVec2 canvas_max) {
+  const studio::CameraForm& form = ui.camera_form;
+  // While the tab is open (the tab bar, drawn before, says which one is).
+  if (ui.shown_panel != studio::Panel::Camera || !form.show_grid || !controller.camera()) return;
+  const studio::ViewTransform& view = ui.image_view.view;
+  studio::GroundGrid& grid = ui.camera_view.grid;
   studio::build_ground_grid(*controller.camera(), controller.image().cols, controller.image().rows, form.grid, grid);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->PushClipRect(canvas_min, canvas_max, true);

@@ -23,9 +23,9 @@ void draw_metrics_panel(studio::StudioController& controller, UiState& ui);
 void draw_export_panel(studio::StudioController& controller, UiState& ui);
 // The Camera tab (camera_panel.cpp), and the ground grid it puts over the canvas (between
 // `canvas_min` and `canvas_max`, screen px) while the tab is open.
-void draw_camera_panel(studio::StudioController& controller);
-void draw_camera_overlay(const studio::StudioController& controller, const studio::ViewTransform& view,
-                         ImVec2 canvas_min, ImVec2 canvas_max);
+void draw_camera_panel(studio::StudioController& controller, UiState& ui);
+void draw_camera_overlay(const studio::StudioController& controller, UiState& ui, ImVec2 canvas_min,
+                         ImVec2 canvas_max);
 
 // A "(?)" whose tooltip, `text`, opens above it: help that never covers what follows it.
 void help_marker(const char* text);

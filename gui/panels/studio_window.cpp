@@ -149,22 +149,18 @@ void draw_studio(studio::StudioController& controller, UiState& ui, const Canvas
           case Panel::Train: draw_train_panel(controller, ui); break;
           case Panel::Metrics: draw_metrics_panel(controller, ui); break;
           case Panel::Export: draw_export_panel(controller, ui); break;
+          case Panel::Camera: draw_camera_panel(controller, ui); break;
           case Panel::Count: break;
         }
         ImGui::EndTabItem();
       }
-    }
-    // Not one of the Panel tabs (no F-key): the camera is the robot's, not the labelling's.
-    if (begin_tab("Camera")) {
-      draw_camera_panel(controller);
-      ImGui::EndTabItem();
     }
     ui.panel_request_pending = false;
     ImGui::EndTabBar();
   }
   ImGui::EndChild();
   // Over the canvas, once the tab has said whether it is open this frame.
-  draw_camera_overlay(controller, ui.image_view.view, canvas_min,
+  draw_camera_overlay(controller, ui, canvas_min,
                       {canvas_min.x + canvas_size.x, canvas_min.y + canvas_size.y});
   draw_status_bar(controller, ui);
   ImGui::End();

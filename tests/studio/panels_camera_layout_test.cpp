@@ -44,25 +44,8 @@ class HeadlessImGui {
   }
 };
 
-// The side panel's tab bar, its last tab (Camera) selected from the next frame on.
-bool select_camera_tab() {
-  for (int i = 0; i < GImGui->TabBars.GetMapSize(); ++i) {
-    ImGuiTabBar* bar = GImGui->TabBars.TryGetMapData(i);
-    if (!bar || bar->Tabs.Size < 7) continue;
-    bar->NextSelectedTabId = bar->Tabs.back().ID;
-    return true;
-  }
-  return false;
-}
-
-bool camera_tab_shown() {
-  for (ImGuiWindow* w : GImGui->Windows)
-    if (w->WasActive && std::string(w->Name).find("side") != std::string::npos)
-      for (int i = 0; i < GImGui->TabBars.GetMapSize(); ++i)
-        if (ImGuiTabBar* bar = GImGui->TabBars.TryGetMapData(i); bar && bar->Tabs.Size >= 7)
-          return bar->VisibleTabId == bar->Tabs.back().ID;
-  return false;
-}
+// Whether the side panel's Camera tab is the one shown.
+bool camera_tab_shown(const fs::UiState& ui) { return ui.shown_panel == fs::Panel::Camera; }
 
 std::vector<std::string> overflows(ImVec2 display) {
   std::vector<std::string> out;
@@ -91,7 +74,7 @@ struct CameraProject {
 
 void expect_fits(HeadlessImGui& imgui, fs::StudioController& c, fs::UiState& ui, ImVec2 display, const char* state) {
   for (int f = 0; f < 4; ++f) imgui.frame(c, ui);
-  ASSERT_TRUE(camera_tab_shown()) << state;
+  ASSERT_TRUE(camera_tab_shown(ui)) << state;
   const std::vector<std::string> bad = overflows(display);
   EXPECT_TRUE(bad.empty()) << display.x << "x" << display.y << " " << state << ": " << ::testing::PrintToString(bad);
 }
@@ -104,8 +87,7 @@ TEST(StudioCameraPanelLayout, FitsFrom1280x720WithAndWithoutACameraAndAFitsResul
     fs::StudioController& c = *p.controller;
     HeadlessImGui imgui(display);
     fs::UiState ui;
-    imgui.frame(c, ui);
-    ASSERT_TRUE(select_camera_tab());
+    ui.show(fs::Panel::Camera);
     expect_fits(imgui, c, ui, display, "no camera");
     c.set_camera(fs::typical_camera(640, 480));
     expect_fits(imgui, c, ui, display, "typical camera");
@@ -127,8 +109,7 @@ TEST(StudioCameraPanelLayout, TooltipsNearTheRightEdgeStayInsideTheDisplay) {
   c.set_camera(fs::typical_camera(640, 480));
   HeadlessImGui imgui(display);
   fs::UiState ui;
-  imgui.frame(c, ui);
-  ASSERT_TRUE(select_camera_tab());
+  ui.show(fs::Panel::Camera);
   int tooltips = 0;
   for (float x : {display.x - 30, display.x - 150}) {
     for (float y = 40; y < display.y - 30; y += 18) {
