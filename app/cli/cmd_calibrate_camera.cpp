@@ -33,7 +33,9 @@ right pose, a field's lines are all parallel or perpendicular. FRAMES (images or
 the field from one camera whose intrinsics are known and whose pitch, roll and height are the
 same in every frame (the robot stands; where it stands and where it looks may differ). The
 detector's stripes (the painted lines' centre lines) of all frames are fitted together, from
-START.json's pose within 8 degrees (docs/camera_calibration.md).
+START.json's pose within 8 degrees (docs/camera_calibration.md). The focal lengths are fitted
+too, within a few per cent of START.json's (a lens's focal is rarely known better than that;
+the principal point is kept).
 
 The height does not change a direction. With --line-width, the painted width in metres, it
 scales the start's height by that width over the stripes' median width on the ground; without
@@ -42,7 +44,7 @@ it the start's height is kept (and the report says so).
 Writes CAMERA.json (the camera file `fieldlines detect --camera` reads: the intrinsics of
 START.json with the fitted pose), atomically, and a report on stdout. Refused with exit code 2
 and no file written: START.json unreadable, a camera that sees no ground, frames without enough
-lines (2 in 2 directions) or lines that do not pin the pose down (its sd above 1 degree),
+lines (2 in 2 directions) or lines that do not pin the pose down (its sd above 0.5 degree),
 frames that contradict each other (the lines still stray after the fit), no readable frame.
 
 options:
@@ -107,6 +109,7 @@ nlohmann::json report_json(const CameraFit& fit, const GroundCamera& start, cons
           {"camera", to_json(fit.camera)},
           {"rms_before_deg", fit.rms_before_deg},
           {"rms_after_deg", fit.rms_after_deg},
+          {"focal_scale", fit.focal_scale},
           {"fitting_share", fit.fitting_share},
           {"pitch_sd_deg", fit.pitch_sd_deg},
           {"roll_sd_deg", fit.roll_sd_deg},
@@ -123,6 +126,9 @@ void print_report(const CameraFit& fit, const GroundCamera& start, const Frames&
   std::printf("pitch %.2f -> %.2f deg, roll %.2f -> %.2f deg (sd %.2f, %.2f for 1 px on the lines' ends)\n",
               deg(start.pitch_rad), deg(fit.camera.pitch_rad), deg(start.roll_rad), deg(fit.camera.roll_rad),
               fit.pitch_sd_deg, fit.roll_sd_deg);
+  if (fit.focal_scale != 1)
+    std::printf("fx %.1f -> %.1f, fy %.1f -> %.1f (x%.3f)\n", start.fx, fit.camera.fx, start.fy, fit.camera.fy,
+                fit.focal_scale);
   std::printf("residual %.2f -> %.2f deg RMS (the better-fitting half of the lines); %.0f %% of the lines' weight fits\n",
               fit.rms_before_deg, fit.rms_after_deg, 100 * fit.fitting_share);
   if (fit.height_fitted)
