@@ -25,27 +25,15 @@ void CameraForm::update(const StudioController& controller) {
     project_ = controller.project_file();
     path_ = default_camera_path(project_, controller.project().images).string();
     base_ = fs::absolute(project_).lexically_normal().parent_path();
-    message_.clear();
-    failed_ = false;
+    report_.clear();
   }
   resolve();
 }
 
 void CameraForm::resolve() { target_ = resolve_export_path(path_, base_, home_folder()); }
 
-template <typename Action>
-void CameraForm::act(Action&& action) {
-  try {
-    message_ = action();
-    failed_ = false;
-  } catch (const std::exception& e) {
-    message_ = e.what();
-    failed_ = true;
-  }
-}
-
 void CameraForm::save(const StudioController& controller) {
-  act([&] {
+  report_.run([&] {
     if (!target_.ok()) throw Error(target_.error);
     if (!controller.camera()) throw Error("no camera to save: load one or start from a typical camera");
     write_file_atomically(target_.path, to_json(*controller.camera()).dump(2) + "\n");
@@ -54,7 +42,7 @@ void CameraForm::save(const StudioController& controller) {
 }
 
 void CameraForm::load(StudioController& controller) {
-  act([&] {
+  report_.run([&] {
     if (!target_.ok()) throw Error(target_.error);
     controller.set_camera(load_camera_file(target_.path));
     return "loaded " + target_.path.string();
@@ -62,14 +50,14 @@ void CameraForm::load(StudioController& controller) {
 }
 
 void CameraForm::start_typical(StudioController& controller) {
-  act([&] {
+  report_.run([&] {
     controller.set_camera(typical_camera(controller.image().cols, controller.image().rows));
     return std::string("a typical camera for this image size: nudge it, or fit it from the lines");
   });
 }
 
 void CameraForm::apply_fit(StudioController& controller) {
-  act([&] {
+  report_.run([&] {
     if (!apply_camera_fit(controller)) throw Error("no fitted camera to apply");
     return std::string("applied the fitted camera: save it to keep it, re-detect to use it");
   });

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "fieldlines/train/camera_fit.hpp"
+#include "gui/model/action_report.hpp"
 #include "gui/model/camera_tuning.hpp"
 #include "gui/model/export_path.hpp"
 
@@ -37,8 +38,8 @@ class CameraForm {
   void start_typical(StudioController& controller);
   // Adopts the finished fit (camera_fit_job.hpp's apply_camera_fit) and says what is next.
   void apply_fit(StudioController& controller);
-  const std::string& message() const { return message_; }
-  bool failed() const { return failed_; }
+  const std::string& message() const { return report_.text(); }
+  bool failed() const { return report_.failed(); }
 
   bool show_grid = true;     // the ground grid over the frame while the tab is open
   GridParams grid;
@@ -48,15 +49,12 @@ class CameraForm {
   CameraFitParams fit_params() const;
 
  private:
-  template <typename Action>
-  void act(Action&& action);
 
   std::string path_;
   std::filesystem::path project_;  // the project the default path was made for
   std::filesystem::path base_;
   ExportTarget target_;
-  std::string message_;
-  bool failed_ = false;
+  ActionReport report_;
 };
 
 }  // namespace fieldlines::studio

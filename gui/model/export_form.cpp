@@ -27,9 +27,8 @@ void ExportForm::update(const StudioController& controller) {
     project_ = project;
     path_ = default_export_path(project, controller.project().images).string();
     base_ = fs::absolute(project).lexically_normal().parent_path();
-    message_.clear();
+    report_.clear();
     preview_.clear();
-    failed_ = false;
   }
   resolve();
 }
@@ -42,52 +41,30 @@ void ExportForm::resolve() {
   while (browsed_.has_relative_path() && !fs::is_directory(browsed_, ec)) browsed_ = browsed_.parent_path();
 }
 
-template <typename Action>
-void ExportForm::act(Action&& action) {
-  try {
-    message_ = action();
-    failed_ = false;
-  } catch (const std::exception& e) {
-    message_ = e.what();
-    failed_ = true;
-  }
-}
-
-void ExportForm::write(const StudioController& controller) {
+std::string ExportForm::write(const StudioController& controller) {
   studio::export_thresholds(controller, target_.path);
   preview_ = read_file(target_.path);
-  message_ = "wrote " + written_path(target_.path);
+  return "wrote " + written_path(target_.path);
 }
 
 void ExportForm::export_thresholds(const StudioController& controller) {
-  if (!target_.ok()) {
-    message_ = target_.error;
-    failed_ = true;
-    return;
-  }
-  if (!target_.folder_exists) {
-    message_ = "the folder does not exist: press \"Create folder and export\" to create it";
-    failed_ = true;
-    return;
-  }
-  act([&] {
-    write(controller);
-    return message_;
-  });
+  if (!target_.ok()) return report_.set(target_.error, true);
+  if (!target_.folder_exists)
+    return report_.set("the folder does not exist: press \"Create folder and export\" to create it", true);
+  report_.run([&] { return write(controller); });
 }
 
 void ExportForm::create_folder_and_export(const StudioController& controller) {
-  act([&] {
+  report_.run([&] {
     if (!target_.ok()) throw Error(target_.error);
     create_parent_folders(target_.path);
     target_.folder_exists = true;
-    write(controller);
-    return message_;
+    return write(controller);
   });
 }
 
 void ExportForm::import_thresholds(StudioController& controller) {
-  act([&] {
+  report_.run([&] {
     if (!target_.ok()) throw Error(target_.error);
     studio::import_thresholds(controller, target_.path);
     preview_ = read_file(target_.path);
@@ -96,7 +73,7 @@ void ExportForm::import_thresholds(StudioController& controller) {
 }
 
 void ExportForm::export_labels_csv(const StudioController& controller) {
-  act([&] {
+  report_.run([&] {
     if (!target_.ok()) throw Error(target_.error);
     const fs::path csv = target_.path.parent_path() / (controller.project_file().stem().string() + "-labels.csv");
     const std::size_t rows = studio::export_labels_csv(controller, csv);

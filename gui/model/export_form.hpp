@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gui/model/action_report.hpp"
 #include "gui/model/export_path.hpp"
 #include "gui/model/folder_listing.hpp"
 
@@ -37,8 +38,8 @@ class ExportForm {
   // Beside the thresholds file: `<project stem>-labels.csv`.
   void export_labels_csv(const StudioController& controller);
 
-  const std::string& message() const { return message_; }
-  bool failed() const { return failed_; }
+  const std::string& message() const { return report_.text(); }
+  bool failed() const { return report_.failed(); }
   const std::string& preview() const { return preview_; }  // the file last written or imported
 
   // The folder browser: the nearest existing folder of the target's (or of the base when the
@@ -49,9 +50,7 @@ class ExportForm {
   void choose_folder(const std::filesystem::path& folder);
 
  private:
-  template <typename Action>
-  void act(Action&& action);
-  void write(const StudioController& controller);
+  std::string write(const StudioController& controller);  // the line to report
 
   std::string path_;
   std::filesystem::path project_;  // the project file the default path was made for
@@ -60,8 +59,7 @@ class ExportForm {
   std::filesystem::path browsed_;
   std::string file_name_;  // what choose_folder keeps
   FolderListing listing_;
-  std::string message_;
-  bool failed_ = false;
+  ActionReport report_;
   std::string preview_;
 };
 
