@@ -1,7 +1,8 @@
 // The real panels drawn by ImGui without a window (a context, a font atlas, no backend): at
 // 1280x800 and larger, with long texts in the status bar, on every tab, nothing is laid out past
 // its window's right edge (ImGui would clip it: text cut off) and no window or tooltip lies
-// outside the display. The layout is ImGui's own, so this is what the window shows.
+// outside the display; the Camera tab also with and without a camera and a fit's result, from
+// 1280x720. The layout is ImGui's own, so this is what the window shows.
 #include <gtest/gtest.h>
 
 #include <imgui.h>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "fixtures.hpp"
+#include "gui/model/camera_tuning.hpp"
 #include "gui/model/leave_one_out.hpp"
 #include "gui/model/studio_controller.hpp"
 #include "gui/model/ui_state.hpp"
@@ -141,6 +143,65 @@ TEST(StudioPanelsLayout, TooltipsNearTheRightEdgeStayInsideTheDisplay) {
     }
   }
   EXPECT_GT(tooltips, 0);  // some were shown, so the check saw them
+}
+
+// The Camera tab in the states a person meets: no camera, one, a fit's error, one for another
+// image size; from 1280x720 up.
+struct CameraProject {
+  CameraProject() : dir("camera_layout") {
+    const auto file = studio_test::write_project(dir.path(), 3, 12, 640, 480);
+    controller.emplace(fieldlines::Project::load(file), file, fs::ControllerOptions{});
+  }
+  studio_test::TempDir dir;
+  std::optional<fs::StudioController> controller;
+};
+
+void expect_fits(HeadlessImGui& imgui, fs::StudioController& c, fs::UiState& ui, ImVec2 display, const char* state) {
+  for (int f = 0; f < 4; ++f) imgui.frame(c, ui);
+  ASSERT_EQ(ui.shown_panel, fs::Panel::Camera) << state;
+  const std::vector<std::string> bad = overflows(display);
+  EXPECT_TRUE(bad.empty()) << display.x << "x" << display.y << " " << state << ": " << ::testing::PrintToString(bad);
+}
+
+TEST(StudioCameraPanelLayout, FitsFrom1280x720WithAndWithoutACameraAndAFitsResult) {
+  for (const ImVec2 display : {ImVec2{1280, 720}, ImVec2{1280, 800}, ImVec2{1920, 1080}}) {
+    CameraProject p;
+    fs::StudioController& c = *p.controller;
+    HeadlessImGui imgui(display);
+    fs::UiState ui;
+    ui.show(fs::Panel::Camera);
+    expect_fits(imgui, c, ui, display, "no camera");
+    c.set_camera(fs::typical_camera(640, 480));
+    expect_fits(imgui, c, ui, display, "typical camera");
+    // Grid pictures have no painted lines: the fit fails with fit_camera's long message.
+    ASSERT_TRUE(fs::start_camera_fit(c));
+    c.camera_fit().wait();
+    ASSERT_TRUE(c.camera_fit().outcome() && !c.camera_fit().outcome()->ok());
+    expect_fits(imgui, c, ui, display, "failed fit");
+    // A camera for another image size: the note under the intrinsics.
+    c.set_camera(fs::typical_camera(1920, 1080));
+    expect_fits(imgui, c, ui, display, "camera for another size");
+  }
+}
+
+TEST(StudioCameraPanelLayout, TooltipsNearTheRightEdgeStayInsideTheDisplay) {
+  const ImVec2 display{1280, 720};
+  CameraProject p;
+  fs::StudioController& c = *p.controller;
+  c.set_camera(fs::typical_camera(640, 480));
+  HeadlessImGui imgui(display);
+  fs::UiState ui;
+  ui.show(fs::Panel::Camera);
+  int tooltips = 0;
+  for (float x : {display.x - 30, display.x - 150}) {
+    for (float y = 40; y < display.y - 30; y += 18) {
+      for (int f = 0; f < 2; ++f) imgui.frame(c, ui, {x, y});
+      for (ImGuiWindow* w : GImGui->Windows) tooltips += w->WasActive && (w->Flags & ImGuiWindowFlags_Tooltip);
+      const std::vector<std::string> bad = overflows(display);
+      EXPECT_TRUE(bad.empty()) << x << "," << y << ": " << ::testing::PrintToString(bad);
+    }
+  }
+  EXPECT_GT(tooltips, 0);  // the help markers were reached
 }
 
 }  // namespace
