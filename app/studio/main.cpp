@@ -226,7 +226,8 @@ int run(const studio::StudioArgs& args) {
   int frames = 0;
   int busy_frames = 0;  // keep rendering a few frames after any input so ImGui settles
   while (!glfwWindowShouldClose(window.get()) && !ui.quit_requested) {
-    const bool working = import || session->training().running() || session->detection().running();
+    const bool working = import || session->training().running() || session->detection().running() ||
+                         session->camera_fit().running();
     if (bench || working || busy_frames > 0) {
       glfwPollEvents();
     } else {
