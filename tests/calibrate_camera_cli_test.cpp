@@ -135,3 +135,39 @@ TEST_F(CalibrateCamera, BadInputIsRefusedWithoutACameraFile) {
 }
 
 }  // namespace
+
+namespace {
+
+// --place: where each frame's camera stands, from the centre circle and the halfway line, is the
+// truth's (in the half asked for: the field is symmetric, so a truth in the other half is
+// compared mirrored).
+TEST_F(CalibrateCamera, PlaceFromTheCentreCircleIsTheTruths) {
+  const fs::path set = frames("placed", 25, 2, 0.6, 12, 5);
+  const fs::path report = dir_ / "placed.json";
+  const auto r = run_cli({"calibrate-camera", set.string(), "--camera", camera_file("start.json", 22, 0, 0.5).string(),
+                          "-o", (dir_ / "camera.json").string(), "--line-width", "0.05", "--place", "--json",
+                          report.string(), "--quiet"},
+                         dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  int placed = 0;
+  const nlohmann::json fitted = nlohmann::json::parse(read_text(report));
+  for (const auto& frame : fitted.at("per_frame")) {
+    if (frame.at("place").is_null()) continue;
+    ++placed;
+    const std::string image = frame["image"];
+    const auto truth = nlohmann::json::parse(read_text(set / "truth" / (fs::path(image).stem().string() + ".json")))["camera"];
+    double x = truth["position"][0], y = truth["position"][1], yaw = truth["yaw_deg"];
+    if (x > 0) x = -x, y = -y, yaw += 180;
+    EXPECT_NEAR(frame["place"]["x_m"].get<double>(), x, 0.1) << image;
+    EXPECT_NEAR(frame["place"]["y_m"].get<double>(), y, 0.1) << image;
+    EXPECT_NEAR(std::remainder(frame["place"]["yaw_deg"].get<double>() - yaw, 360.0), 0, 1.0) << image;
+  }
+  EXPECT_GE(placed, 2) << "the frames must show the centre circle and the halfway line";
+  const auto without = run_cli({"calibrate-camera", set.string(), "--camera", (dir_ / "start.json").string(), "-o",
+                                (dir_ / "c2.json").string(), "--positive-half"},
+                               dir_);
+  EXPECT_EQ(without.exit_code, 2);
+  EXPECT_NE(without.err.find("--positive-half goes with --place"), std::string::npos) << without.err;
+}
+
+}  // namespace

@@ -14,9 +14,12 @@
 #include "app/cli/output_file.hpp"
 #include "app/cli/progress.hpp"
 #include "app/cli/subcommand.hpp"
+#include "fieldlines/data/image_io.hpp"
 #include "fieldlines/detect/camera_file.hpp"
+#include "fieldlines/detect/detector.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/detect/thresholds_file.hpp"
+#include "fieldlines/detect/field_place.hpp"
 #include "fieldlines/train/camera_fit.hpp"
 #include "fieldlines/train/frame_lines.hpp"
 
@@ -55,6 +58,10 @@ options:
   --thresholds FILE   detector parameters and thresholds (default: built-in); the stripes
                       stage is on whatever the file says
   --json REPORT       also write the fit's figures as JSON
+  --place             also say where each frame's camera stands on the field and which way it
+                      looks, from the centre circle (the field's origin) and the halfway line
+                      through it, with the fitted camera (field_place.hpp); the field is
+                      symmetric, so the place is the one with x <= 0 (--positive-half: x >= 0)
   --quiet             no report on stdout, no progress on stderr
   -h, --help          this help
 
@@ -65,6 +72,7 @@ examples:
 
 struct Frames {
   std::vector<FrameLines> lines;
+  std::vector<fs::path> images;  // parallel to lines
   int failed = 0;  // images that could not be read (reported, the rest went on)
 };
 
@@ -81,6 +89,7 @@ Frames detect_frames(const std::vector<std::string>& paths, FrameLinesDetector& 
   for (const fs::path& image : inputs.images) {
     try {
       out.lines.push_back(detector.detect(image));
+      out.images.push_back(image);
     } catch (const Error& e) {
       progress.message("fieldlines calibrate-camera: " + std::string(e.what()));
       ++out.failed;
@@ -92,14 +101,35 @@ Frames detect_frames(const std::vector<std::string>& paths, FrameLinesDetector& 
 
 double deg(double rad) { return rad / kDeg; }
 
+// --place: each frame's place on the field through the fitted camera (field_place.hpp), from the
+// centre circle and the halfway line its detector finds with every feature stage on.
+std::vector<std::optional<FieldPlace>> frame_places(const Frames& frames, const GroundCamera& camera,
+                                                    const ThresholdsFile& config, bool negative_half) {
+  LineDetector detector(with_every_feature(config.detector), config.thresholds);
+  detector.set_camera(camera);
+  std::vector<std::optional<FieldPlace>> out;
+  for (const fs::path& image : frames.images) {
+    detector.detect(load_image(image));
+    out.push_back(place_from_centre_circle(detector.ground_features(), {.negative_half = negative_half}));
+  }
+  return out;
+}
+
+nlohmann::json place_json(const std::optional<FieldPlace>& p) {
+  if (!p) return nullptr;
+  return {{"x_m", p->x_m}, {"y_m", p->y_m}, {"yaw_deg", deg(p->yaw_rad)}, {"halfway_pieces", p->halfway_pieces}};
+}
+
 nlohmann::json report_json(const CameraFit& fit, const GroundCamera& start, const Frames& frames,
-                           const std::optional<double>& line_width) {
+                           const std::optional<double>& line_width,
+                           const std::vector<std::optional<FieldPlace>>& places) {
   nlohmann::json per_frame = nlohmann::json::array();
   for (std::size_t i = 0; i < frames.lines.size(); ++i) {
     const double share = fit.frame_fitting_share[i];
     per_frame.push_back({{"image", frames.lines[i].name},
                          {"lines", frames.lines[i].markings.size()},
                          {"fitting_share", std::isnan(share) ? nlohmann::json(nullptr) : nlohmann::json(share)}});
+    if (!places.empty()) per_frame.back()["place"] = place_json(places[i]);
   }
   return {{"frames", frames.lines.size()},
           {"failed_inputs", frames.failed},
@@ -118,6 +148,19 @@ nlohmann::json report_json(const CameraFit& fit, const GroundCamera& start, cons
                       {"median_stripe_width_m", fit.median_width_m},
                       {"stripes", fit.widths_used}}},
           {"per_frame", per_frame}};
+}
+
+// Where each frame's camera stands, when --place asked (frames without the circle and the
+// halfway line say so).
+void print_places(const Frames& frames, const std::vector<std::optional<FieldPlace>>& places) {
+  for (std::size_t i = 0; i < places.size(); ++i) {
+    const std::string name = frames.images[i].filename().string();
+    if (const auto& p = places[i])
+      std::printf("%s: at (%.2f, %.2f) m, heading %.1f deg (the centre circle and %d piece(s) of the halfway line)\n",
+                  name.c_str(), p->x_m, p->y_m, deg(p->yaw_rad), p->halfway_pieces);
+    else
+      std::printf("%s: no place (no centre circle with the halfway line through it)\n", name.c_str());
+  }
 }
 
 void print_report(const CameraFit& fit, const GroundCamera& start, const Frames& frames, const fs::path& output) {
@@ -144,7 +187,7 @@ void print_report(const CameraFit& fit, const GroundCamera& start, const Frames&
 
 int cmd_calibrate_camera(const Args& args) {
   const auto parsed = parse_or_print_help(args, {"--camera", "-o", "--output", "--json", "--thresholds", "--line-width"},
-                                          {"--quiet"}, kHelp);
+                                          {"--quiet", "--place", "--positive-half"}, kHelp);
   if (!parsed) return 0;
   const ParsedArgs& a = *parsed;
   if (a.positionals().empty()) throw Error("expected at least one image or folder (see --help)");
@@ -161,6 +204,8 @@ int cmd_calibrate_camera(const Args& args) {
   ThresholdsFile config;
   if (const auto t = a.value("--thresholds")) config = load_thresholds_file(*t);
   const bool quiet = a.flag("--quiet");
+  const bool place = a.flag("--place");
+  if (a.flag("--positive-half") && !place) throw Error("--positive-half goes with --place");
 
   FrameLinesDetector detector(config.detector, config.thresholds);  // stripes on
   const Frames frames = detect_frames(a.positionals(), detector, quiet);
@@ -168,8 +213,13 @@ int cmd_calibrate_camera(const Args& args) {
   const CameraFit fit = fit_camera(frames.lines, start, params);
 
   write_output_file(output, to_json(fit.camera).dump(2) + "\n");
-  if (report) write_output_file(*report, report_json(fit, start, frames, params.line_width_m).dump(2) + "\n");
-  if (!quiet) print_report(fit, start, frames, output);
+  std::vector<std::optional<FieldPlace>> places;
+  if (place) places = frame_places(frames, fit.camera, config, !a.flag("--positive-half"));
+  if (report) write_output_file(*report, report_json(fit, start, frames, params.line_width_m, places).dump(2) + "\n");
+  if (!quiet) {
+    print_report(fit, start, frames, output);
+    print_places(frames, places);
+  }
   return frames.failed ? 1 : 0;
 }
 
