@@ -506,7 +506,7 @@ CameraFit fit_camera(std::span<const FrameLines> frames, const GroundCamera& sta
     throw Error("the lines do not pin the pose down: " + std::to_string(fit.lines_used) + " lines in " +
                 std::to_string(fit.frames_used) + " frames leave the pitch uncertain by " + sd(fit.pitch_sd_deg) +
                 " deg and the roll by " + sd(fit.roll_sd_deg) + " (at most " + fixed(params.max_pose_sd_deg, 1) +
-                "); more frames, with long lines in two directions, would");
+                "); more frames, with long lines in two directions, would pin it down");
   }
 
   const std::vector<double> widths = ground_widths(set, projection(start, fitted), after, params);
