@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -123,6 +124,10 @@ TEST_F(StudioCameraWindow, TheCameraTabDrawsTheGridNudgesItAndSavesTheCamera) {
   std::this_thread::sleep_for(3s);
   const auto fitted = screenshot("camera_fitted");
   EXPECT_TRUE(studio->running()) << log();
+  // docs/studio.md's picture of the tab, when scripts/screenshots.sh asks for it.
+  if (const char* docs = std::getenv("FIELDLINES_SCREENSHOT_DIR"); docs && *docs)
+    std::filesystem::copy_file(fitted, std::filesystem::path(docs) / "studio-camera.png",
+                               std::filesystem::copy_options::overwrite_existing);
   const cv::Mat panel_before = cv::imread(nudged.string()), panel_after = cv::imread(fitted.string());
   ASSERT_EQ(panel_before.size(), panel_after.size());
   const cv::Rect side(870, 450, 410, 100);  // between the Fit button and the camera file
