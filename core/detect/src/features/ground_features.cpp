@@ -84,11 +84,16 @@ cv::Point2d cut(const Projections& p, cv::Point2d inside, cv::Point2d outside) {
 
 void project_marking(const Marking& m, const Projections& p, std::vector<GroundMarkingSegment>& out) {
   cv::Point2d a(m.x0, m.y0), b(m.x1, m.y1);
-  const bool on_a = p.ground(a.x, a.y).has_value(), on_b = p.ground(b.x, b.y).has_value();
-  if (!on_a && !on_b) return;
-  if (!on_a) a = cut(p, b, a);
-  if (!on_b) b = cut(p, a, b);
-  const auto start = p.point(a.x, a.y), end = p.point(b.x, b.y);
+  auto start = p.point(a.x, a.y), end = p.point(b.x, b.y);
+  if (!start && !end) return;
+  if (!start) {
+    a = cut(p, b, a);
+    start = p.point(a.x, a.y);
+  }
+  if (!end) {
+    b = cut(p, a, b);
+    end = p.point(b.x, b.y);
+  }
   if (!start || !end) return;
   // The width at the middle: the points half a width either side in the image lie on the two
   // edges; on the ground, the edges' distance is their gap across the line (the image's normal
