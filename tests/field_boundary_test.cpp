@@ -53,6 +53,29 @@ TEST(FieldBoundary, ARobotAtTheSideDoesNotPullTheEndDown) {
   EXPECT_NEAR(b.y_at(620), horizon(552), 6);
 }
 
+// A dark wall along the field, shorter than the gap a ball may leave, with a green curtain 40 px
+// tall above it (the authors' SSL lab): the curtain is not the field, although the
+// scan crosses the wall to reach it; field less than twice the wall's length above a band that
+// long does not pay for it, and the top settles at the field's edge.
+TEST(FieldBoundary, AGreenCurtainAboveAWallIsNotTheField) {
+  cv::Mat img = field_frame();
+  const int wall = 24;  // below the gap (6 % of 480 = 29 px) and above 0.8 of it
+  for (int x = 0; x < 640; ++x) {
+    const int edge = static_cast<int>(std::lround(horizon(float(x))));
+    cv::line(img, {x, edge - wall}, {x, edge - 1}, cv::Scalar(20, 20, 20));
+    if (x < 240) cv::line(img, {x, edge - wall - 40}, {x, edge - wall - 1}, cv::Scalar(50, 140, 40));
+  }
+  img = fl::test::noisy(img);
+  fl::FieldBoundary b;
+  fl::find_field_boundary(img, b);
+  ASSERT_FALSE(b.empty());
+  for (float x = 0; x < 640; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
+  fl::FieldBoundaryParams free_bands;
+  free_bands.band_cost = 0;
+  fl::find_field_boundary(img, b, free_bands);
+  EXPECT_LT(b.y_at(100), horizon(100) - wall) << "without the band's cost the curtain is the field";
+}
+
 // A sunlit field with the shade of a window on it: the far part of the right third lies in warm
 // sun (a chromaticity 0.12 from the shade's median), its near part in the shade. With the
 // median's colour alone those columns end at the sun patch's lower edge, and the boundary runs

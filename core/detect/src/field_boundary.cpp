@@ -19,6 +19,30 @@ double cross(const Point& o, const Point& a, const Point& b) {
   return double(a.x - o.x) * (b.y - o.y) - double(a.y - o.y) * (b.x - o.x);
 }
 
+// The column's top, settled: scanning down from `top`, each field sample weighs +1 and a band of
+// at least `band` px without field (paint is neither) weighs -cost per sample; the top moves to
+// the field sample above which the weight is least, the lowest on a tie (nothing moves when all
+// that lies above pays for itself). Stops once one more band inside the field (shorter than
+// the gap) could no longer bring the weight back below its least.
+int settle_top(const cv::Mat& bgr8, const FieldPixel& pixel, int x, int top, int row_step, int band, float cost,
+               int gap) {
+  const float give_up = cost * float(gap / row_step);
+  float weight = 0, least = 0;
+  int settled = top, run = 0;
+  for (int y = top; y < bgr8.rows; y += row_step) {
+    const std::uint8_t* p = bgr8.ptr<std::uint8_t>(y) + 3 * x;
+    if (pixel.field(p)) {
+      if (run * row_step >= band) weight -= cost * float(run);
+      run = 0;
+      if (weight <= least) least = weight, settled = y;
+      if ((weight += 1) - least > give_up) break;
+    } else if (!pixel.paint(p)) {
+      ++run;
+    }
+  }
+  return settled;
+}
+
 }  // namespace
 
 float FieldBoundary::y_at(float x) const {
@@ -67,6 +91,7 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   // field the sample up to `jump` steps up is tested first, and those between are skipped when
   // it is field: a few reads per column instead of one per step, and the same tops.
   const int jump = std::clamp(gap / row_step, 0, std::max(params.max_jump, 0));
+  const int band = std::max(row_step, static_cast<int>(std::lround(params.band_fraction * gap)));
   int scanned = 0;
   for (int x = column_step / 2; x < bgr8.cols; x += column_step) {
     ++scanned;
@@ -92,7 +117,8 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
                 // body, a lens's dark corner) nothing ends it
       }
     }
-    if (top >= 0) out.columns.push_back({float(x), float(top)});
+    if (top >= 0)
+      out.columns.push_back({float(x), float(settle_top(bgr8, pixel, x, top, row_step, band, params.band_cost, gap))});
   }
   if (out.columns.size() < std::max<std::size_t>(2, static_cast<std::size_t>(params.min_columns * scanned))) return;
   // Median of each column's top with its neighbours (a fixed window: no allocation). The

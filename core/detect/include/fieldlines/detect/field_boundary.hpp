@@ -7,7 +7,10 @@
 // Each sampled column is scanned from the bottom up (the field is below the camera's horizon)
 // for the top of its field: field pixels interrupted by less than a gap (a ball, a robot's
 // foot) belong to it, and so does paint (a line near the camera can be wider than any gap);
-// the first longer stretch without field ends it. Column tops are median-filtered across 7
+// the first longer stretch without field ends it. A gap that long is the field's own only when
+// the field goes on well beyond it: the top then settles below any band without field nearly
+// as long as the gap (a wall) that less than twice its length of field lies above (a green
+// curtain or poster over the wall). Column tops are median-filtered across 7
 // neighbouring columns (a column running up a green poster, pole or shirt is an outlier, and so
 // are up to 3 side by side), then replaced by their upper convex hull: a robot or player standing
 // on the field hides the green behind it and pulls its columns down, but the boundary of a flat
@@ -34,6 +37,10 @@ struct FieldBoundaryParams {
   int row_step = 2;            // px between samples along a column
   double gap_fraction = 0.06;  // a run without green this share of the height ends the field...
   int min_gap_px = 8;          // ...and at least this long
+  // A band without field at least this share of the gap (a wall: a ball or a foot is shorter)
+  // costs this many field samples per sample: the field above it must outweigh it to count.
+  double band_fraction = 0.8;
+  float band_cost = 2.0f;
   double min_columns = 0.25;   // columns with field needed, as a share: fewer is no boundary
   float chroma_tolerance = 0.07f;       // |r/s - r_f/s_f| + |g/s - g_f/s_f|, s = r + g + b
   TurfBrightness brightness;           // s / s_f: shade to sun patch
