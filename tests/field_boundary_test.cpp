@@ -76,6 +76,31 @@ TEST(FieldBoundary, AGreenCurtainAboveAWallIsNotTheField) {
   EXPECT_LT(b.y_at(100), horizon(100) - wall) << "without the band's cost the curtain is the field";
 }
 
+// A band of the field's surround along its edge (MSL Bangkok: a darker carpet strip), 0.065 in
+// chromaticity from the turf: within the median's loose tolerance, outside the turf colours the
+// frame measures. With them the boundary keeps to the turf's edge; with the loose tolerance it
+// runs along the band's top. (No pixel noise: it would blur a colour difference this small.)
+TEST(FieldBoundary, TheFieldsSurroundIsNotTurfWhenTheTurfColoursAreMeasured) {
+  cv::Mat img = field_frame();
+  const int band = 10;
+  for (int x = 0; x < 640; ++x) {
+    const int edge = static_cast<int>(std::lround(horizon(float(x))));
+    cv::line(img, {x, edge - band}, {x, edge - 1}, cv::Scalar(64, 124, 40));
+  }
+  const std::optional<fl::Rgb> field = fl::estimate_field_colour(img);
+  ASSERT_TRUE(field);
+  fl::TurfColours turf;
+  turf.measure(img, *field);
+  fl::FieldBoundary b;
+  fl::find_field_boundary(img, *field, b, {}, &turf);
+  ASSERT_FALSE(b.empty());
+  for (float x = 0; x < 640; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
+  fl::FieldBoundaryParams loose;
+  loose.turf_chroma_tolerance = loose.chroma_tolerance;
+  fl::find_field_boundary(img, *field, b, loose, &turf);
+  EXPECT_LT(b.y_at(320), horizon(320) - band + 4) << "the loose tolerance takes the band for turf";
+}
+
 // A sunlit field with the shade of a window on it: the far part of the right third lies in warm
 // sun (a chromaticity 0.12 from the shade's median), its near part in the shade. With the
 // median's colour alone those columns end at the sun patch's lower edge, and the boundary runs

@@ -33,7 +33,8 @@ class FieldPixel {
   // must outlive this.
   FieldPixel(const Rgb& field, const FieldBoundaryParams& params, const TurfColours* turf = nullptr)
       : p_(params), sum_(std::max(field[0] + field[1] + field[2], 1.f)), r_(field[0] / sum_), g_(field[1] / sum_),
-        turf_(turf && !turf->empty() ? turf : nullptr) {}
+        turf_(turf && !turf->empty() ? turf : nullptr),
+        tolerance_(turf_ ? params.turf_chroma_tolerance : params.chroma_tolerance) {}
 
   float field_sum() const { return sum_; }  // R + G + B of the field colour (at least 1)
 
@@ -43,7 +44,7 @@ class FieldPixel {
     const float sum = float(bgr[0] + bgr[1] + bgr[2]);
     if (!p_.brightness.contains(sum, sum_)) return false;
     const float r = bgr[2] / sum, g = bgr[1] / sum;
-    return std::abs(r - r_) + std::abs(g - g_) <= p_.chroma_tolerance || (turf_ && turf_->contains(r, g));
+    return std::abs(r - r_) + std::abs(g - g_) <= tolerance_ || (turf_ && turf_->contains(r, g));
   }
   bool paint(const std::uint8_t* bgr) const {
     const int sum = bgr[0] + bgr[1] + bgr[2];
@@ -54,6 +55,7 @@ class FieldPixel {
   FieldBoundaryParams p_;
   float sum_, r_, g_;
   const TurfColours* turf_;
+  float tolerance_;  // of the chromaticity from the median's
 };
 
 }  // namespace fieldlines

@@ -43,6 +43,9 @@ struct FieldBoundaryParams {
   float band_cost = 2.0f;
   double min_columns = 0.25;   // columns with field needed, as a share: fewer is no boundary
   float chroma_tolerance = 0.07f;       // |r/s - r_f/s_f| + |g/s - g_f/s_f|, s = r + g + b
+  // ...and this with the frame's turf colours, which hold the turf in every light the frame
+  // shows: the field's surround (a dark band, a greyish carpet) is often as near the median.
+  float turf_chroma_tolerance = 0.05f;
   TurfBrightness brightness;           // s / s_f: shade to sun patch
   int median_columns = 7;      // window of the filter over column tops (odd)
   float paint_brightness = 1.4f;     // paint: s / s_f at least this...
