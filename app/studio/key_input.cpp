@@ -23,6 +23,9 @@ static_assert(static_cast<int>(studio::Key::Enter) == GLFW_KEY_ENTER && static_c
 static_assert(static_cast<int>(studio::Key::P) == GLFW_KEY_P && static_cast<int>(studio::Key::Space) == GLFW_KEY_SPACE);
 static_assert(static_cast<int>(studio::Key::G) == GLFW_KEY_G && static_cast<int>(studio::Key::I) == GLFW_KEY_I);
 static_assert(static_cast<int>(studio::Key::O) == GLFW_KEY_O && static_cast<int>(studio::Key::S) == GLFW_KEY_S);
+static_assert(static_cast<int>(studio::Key::Up) == GLFW_KEY_UP && static_cast<int>(studio::Key::Down) == GLFW_KEY_DOWN);
+static_assert(static_cast<int>(studio::Key::PageUp) == GLFW_KEY_PAGE_UP &&
+              static_cast<int>(studio::Key::PageDown) == GLFW_KEY_PAGE_DOWN);
 
 void run_shortcuts(std::span<const KeyPress> keys, studio::StudioController& controller, studio::UiState& ui) {
   if (ImGui::GetIO().WantTextInput) return;

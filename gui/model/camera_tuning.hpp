@@ -16,6 +16,7 @@
 
 #include "fieldlines/detect/ground_camera.hpp"
 #include "fieldlines/detect/ground_features.hpp"
+#include "gui/model/camera_nudge.hpp"
 #include "gui/model/geometry.hpp"
 #include "gui/model/hit_test.hpp"
 #include "gui/model/overlay_style.hpp"
@@ -25,13 +26,6 @@ namespace fieldlines::studio {
 
 // ---------------------------------------------------------------- the pose a person nudges
 
-struct CameraPose {
-  double pitch_deg = 0, roll_deg = 0, height_cm = 0;
-};
-// One click of the tab's -/+ buttons (and with Ctrl held): fine enough to square lines 10 m
-// away, whose ground heading a 0.05 degree pitch turns by a few tenths of a degree.
-inline constexpr double kAngleStepDeg = 0.05, kAngleFastStepDeg = 1;
-inline constexpr double kHeightStepCm = 0.5, kHeightFastStepCm = 5;
 // The pose is kept where GroundCamera is valid: angles within +-89 degrees, 1 cm to 10 m up.
 inline constexpr double kMaxAngleDeg = 89, kMinHeightCm = 1, kMaxHeightCm = 1000;
 

@@ -1,6 +1,9 @@
 #include "gui/model/shortcut_actions.hpp"
 
+#include <optional>
 #include <string>
+
+#include "gui/model/camera_tuning.hpp"
 
 namespace fieldlines::studio {
 
@@ -30,6 +33,14 @@ void run_shortcut(const Shortcut& shortcut, StudioController& controller, UiStat
       break;
     case Action::ToggleFeatureLayer:
       if (shortcut.layer != FeatureLayer::Count) ui.image_view.settings.features.toggle(shortcut.layer);
+      break;
+    case Action::NudgeCamera:
+      // On the Camera tab, where the grid over the frame shows what the key did.
+      ui.show(Panel::Camera);
+      if (const std::optional<GroundCamera>& camera = controller.camera())
+        controller.set_camera(with_pose(*camera, nudged(pose_of(*camera), shortcut.nudge)));  // clamped: valid
+      else
+        ui.status_message = "no camera to nudge: load one or start from a typical camera in the Camera tab (F7)";
       break;
     case Action::Undo: controller.undo(); break;
     case Action::Redo: controller.redo(); break;

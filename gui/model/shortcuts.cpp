@@ -31,6 +31,12 @@ constexpr std::array kShortcuts{
     Shortcut{key(Key::I), Action::ToggleFeatureLayer, "show / hide the line intersections (L, T, X)", {}, -1, false, FeatureLayer::Intersections},
     Shortcut{key(Key::O), Action::ToggleFeatureLayer, "show / hide the centre circle", {}, -1, false, FeatureLayer::CentreCircle},
     Shortcut{key(Key::S), Action::ToggleFeatureLayer, "show / hide the stripes' centre lines and widths", {}, -1, false, FeatureLayer::Stripes},
+    Shortcut{key(Key::Up), Action::NudgeCamera, "Camera tab: tilt the camera up a step (pitch -0.05 degree)", {}, -1, true, FeatureLayer::Count, {CameraAxis::Pitch, -1}},
+    Shortcut{key(Key::Down), Action::NudgeCamera, "Camera tab: tilt the camera down a step (pitch +0.05 degree)", {}, -1, true, FeatureLayer::Count, {CameraAxis::Pitch, 1}},
+    Shortcut{ctrl(Key::Left), Action::NudgeCamera, "Camera tab: roll the camera anticlockwise a step (-0.05 degree)", {}, -1, true, FeatureLayer::Count, {CameraAxis::Roll, -1}},
+    Shortcut{ctrl(Key::Right), Action::NudgeCamera, "Camera tab: roll the camera clockwise a step (+0.05 degree)", {}, -1, true, FeatureLayer::Count, {CameraAxis::Roll, 1}},
+    Shortcut{key(Key::PageUp), Action::NudgeCamera, "Camera tab: raise the camera a step (+0.5 cm)", {}, -1, true, FeatureLayer::Count, {CameraAxis::Height, 1}},
+    Shortcut{key(Key::PageDown), Action::NudgeCamera, "Camera tab: lower the camera a step (-0.5 cm)", {}, -1, true, FeatureLayer::Count, {CameraAxis::Height, -1}},
     Shortcut{ctrl(Key::Z), Action::Undo, "undo (one step per user action)"},
     Shortcut{ctrl(Key::Z, true), Action::Redo, "redo"},
     Shortcut{ctrl(Key::Y), Action::Redo, "redo"},
@@ -50,6 +56,10 @@ std::string key_name(Key k) {
     case Key::None: return {};
     case Key::Left: return "Left";
     case Key::Right: return "Right";
+    case Key::Up: return "Up";
+    case Key::Down: return "Down";
+    case Key::PageUp: return "Page Up";
+    case Key::PageDown: return "Page Down";
     case Key::Enter: return "Enter";
     case Key::Tab: return "Tab";
     case Key::Space: return "Space";

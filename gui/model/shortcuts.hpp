@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "gui/model/camera_nudge.hpp"
 #include "gui/model/feature_layers.hpp"
 
 namespace fieldlines::studio {
@@ -19,7 +20,7 @@ enum class Key : int {
   B = 'B', C = 'C', E = 'E', F = 'F', G = 'G', I = 'I', M = 'M', N = 'N', O = 'O', P = 'P', Q = 'Q', S = 'S', T = 'T',
   Y = 'Y', Z = 'Z',
   Space = ' ',
-  Enter = 257, Tab = 258, Right = 262, Left = 263,
+  Enter = 257, Tab = 258, Right = 262, Left = 263, Down = 264, Up = 265, PageUp = 266, PageDown = 267,
   F1 = 290, F2, F3, F4, F5, F6, F7,
 };
 
@@ -35,6 +36,7 @@ enum class Action {
   Fit, PreviousImage, NextImage, NextImageWithErrors,
   Propose, AcceptProposals, FocusUncertain,  // the review loop
   ToggleFeatureLayer,  // one of the field feature layers (feature_layers.hpp) on or off
+  NudgeCamera,  // the Camera tab's camera one step (camera_nudge.hpp)
   Undo, Redo, ToggleTraining, ShowTab, Quit,
   Pointer,  // a mouse input (no key)
 };
@@ -45,8 +47,9 @@ struct Shortcut {
   std::string_view description;
   std::string_view pointer = {};  // the mouse input's name, for Action::Pointer
   int tab = -1;                   // for ShowTab: 0 Images .. 5 Export
-  bool repeats = false;           // acts on auto-repeat while held (navigation only)
+  bool repeats = false;           // acts on auto-repeat while held (navigation and nudges)
   FeatureLayer layer = FeatureLayer::Count;  // for ToggleFeatureLayer
+  CameraNudge nudge = {};                    // for NudgeCamera
 };
 
 // Every input, in the order the help and the docs list them.

@@ -39,7 +39,8 @@ void draw_pose(studio::StudioController& controller, const GroundCamera& camera)
   changed |= nudge("height (cm)", pose.height_cm, studio::kHeightStepCm, studio::kHeightFastStepCm, "%.1f");
   ImGui::SameLine();
   help_marker("-/+ nudge by one step (0.05 degree, 0.5 cm), with Ctrl by 1 degree or 5 cm;\n"
-              "or type a value. The grid over the frame and the top view follow at once.\n"
+              "or type a value. Keys, held to repeat: Up / Down pitch, Ctrl+Left / Ctrl+Right roll,\n"
+              "Page Up / Page Down height. The grid over the frame and the top view follow at once.\n"
               "Pitch: the optical axis below the horizontal; roll: clockwise on screen.");
   if (changed) controller.set_camera(studio::with_pose(camera, pose));  // clamped: always valid
   char intrinsics[128];

@@ -224,3 +224,20 @@ TEST(CameraTuning, TheTopViewSquaresTheFieldsLinesOnlyWithTheRightCamera) {
   fs::build_top_view(ground, off, kWidth, kHeight, view, drawing);
   EXPECT_LT(drawn_angle(drawing), 88);
 }
+
+// One step per nudge, along its axis only; the None axis moves nothing.
+TEST(CameraNudge, MovesOneStepAlongItsAxis) {
+  const fs::CameraPose pose{30, 1, 60};
+  const fs::CameraPose down = fs::nudged(pose, {fs::CameraAxis::Pitch, 1});
+  EXPECT_DOUBLE_EQ(down.pitch_deg, 30 + fs::kAngleStepDeg);
+  EXPECT_DOUBLE_EQ(down.roll_deg, 1);
+  EXPECT_DOUBLE_EQ(down.height_cm, 60);
+  EXPECT_DOUBLE_EQ(fs::nudged(pose, {fs::CameraAxis::Roll, -1}).roll_deg, 1 - fs::kAngleStepDeg);
+  const fs::CameraPose lower = fs::nudged(pose, {fs::CameraAxis::Height, -1});
+  EXPECT_DOUBLE_EQ(lower.height_cm, 60 - fs::kHeightStepCm);
+  EXPECT_DOUBLE_EQ(lower.pitch_deg, 30);
+  const fs::CameraPose same = fs::nudged(pose, {fs::CameraAxis::None, 1});
+  EXPECT_DOUBLE_EQ(same.pitch_deg, 30);
+  EXPECT_DOUBLE_EQ(same.roll_deg, 1);
+  EXPECT_DOUBLE_EQ(same.height_cm, 60);
+}

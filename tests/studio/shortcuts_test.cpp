@@ -125,6 +125,27 @@ TEST(Shortcuts, LookupAsTheWindowSeesKeys) {
   EXPECT_EQ(fs::key_for(Action::Pointer), "");
 }
 
+// The camera's nudges: arrows up and down tilt, Ctrl with the image arrows rolls (the plain
+// arrows still change the image), Page Up / Down raise and lower; all repeat while held.
+TEST(Shortcuts, CameraNudgesRepeatAndLeaveTheImageArrowsAlone) {
+  const auto nudge_of = [](Chord c) {
+    const fs::Shortcut* s = fs::find_shortcut(c, true);
+    EXPECT_NE(s, nullptr) << static_cast<int>(c.key);
+    return s && s->action == Action::NudgeCamera ? s->nudge : fs::CameraNudge{};
+  };
+  const auto same = [](fs::CameraNudge a, fs::CameraAxis axis, int direction) {
+    return a.axis == axis && a.direction == direction;
+  };
+  EXPECT_TRUE(same(nudge_of({Key::Up}), fs::CameraAxis::Pitch, -1));
+  EXPECT_TRUE(same(nudge_of({Key::Down}), fs::CameraAxis::Pitch, 1));
+  EXPECT_TRUE(same(nudge_of({Key::Left, true}), fs::CameraAxis::Roll, -1));
+  EXPECT_TRUE(same(nudge_of({Key::Right, true}), fs::CameraAxis::Roll, 1));
+  EXPECT_TRUE(same(nudge_of({Key::PageUp}), fs::CameraAxis::Height, 1));
+  EXPECT_TRUE(same(nudge_of({Key::PageDown}), fs::CameraAxis::Height, -1));
+  EXPECT_EQ(fs::find_shortcut({Key::Left})->action, Action::PreviousImage);
+  EXPECT_EQ(fs::input_name(*fs::find_shortcut({Key::PageUp})), "Page Up");
+}
+
 TEST(Shortcuts, EachFeatureLayerHasOneKeyAndTheLabellingKeysStay) {
   using fs::FeatureLayer;
   const std::pair<Key, FeatureLayer> expected[] = {{Key::G, FeatureLayer::FieldBoundary},

@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "fieldlines/data/project.hpp"
 #include "fixtures.hpp"
+#include "gui/model/camera_tuning.hpp"
 #include "gui/model/shortcut_actions.hpp"
 #include "gui/model/studio_controller.hpp"
 #include "gui/model/ui_state.hpp"
@@ -69,6 +71,35 @@ TEST(ShortcutActions, TabsImagesQuitAndTheStatusLine) {
   EXPECT_FALSE(s.ui.quit_requested);
   s.press(fs::Action::Quit);
   EXPECT_TRUE(s.ui.quit_requested);
+}
+
+// A nudge key brings up the Camera tab; without a camera it says how to get one and changes
+// nothing; with one it moves it one step, and the limits hold however long the key is held.
+TEST(ShortcutActions, NudgeKeysMoveTheCameraOneStepOnTheCameraTab) {
+  Session s;
+  const auto press_nudge = [&](fs::CameraAxis axis, int direction) {
+    for (const fs::Shortcut& sc : fs::shortcuts())
+      if (sc.action == fs::Action::NudgeCamera && sc.nudge.axis == axis && sc.nudge.direction == direction)
+        return fs::run_shortcut(sc, s.controller, s.ui);
+    FAIL() << "no nudge key";
+  };
+  s.ui.panel_request_pending = false;
+  press_nudge(fs::CameraAxis::Pitch, -1);
+  EXPECT_EQ(s.ui.requested_panel, fs::Panel::Camera);
+  EXPECT_TRUE(s.ui.panel_request_pending);
+  EXPECT_FALSE(s.controller.camera().has_value());
+  EXPECT_NE(s.ui.status_message.find("no camera"), std::string::npos) << s.ui.status_message;
+  s.controller.set_camera(fs::typical_camera(320, 240));
+  const fs::CameraPose before = fs::pose_of(*s.controller.camera());
+  press_nudge(fs::CameraAxis::Pitch, -1);
+  press_nudge(fs::CameraAxis::Roll, 1);
+  press_nudge(fs::CameraAxis::Height, 1);
+  const fs::CameraPose after = fs::pose_of(*s.controller.camera());
+  EXPECT_NEAR(after.pitch_deg, before.pitch_deg - fs::kAngleStepDeg, 1e-9);
+  EXPECT_NEAR(after.roll_deg, before.roll_deg + fs::kAngleStepDeg, 1e-9);
+  EXPECT_NEAR(after.height_cm, before.height_cm + fs::kHeightStepCm, 1e-9);
+  for (int held = 0; held < 3000; ++held) press_nudge(fs::CameraAxis::Height, -1);
+  EXPECT_NEAR(fs::pose_of(*s.controller.camera()).height_cm, fs::kMinHeightCm, 1e-9);
 }
 
 TEST(ShortcutActions, TabHoversTheLeastCertainUntilNothingIsLeft) {

@@ -108,14 +108,18 @@ TEST_F(StudioCameraWindow, TheCameraTabDrawsTheGridNudgesItAndSavesTheCamera) {
   const auto nudged = screenshot("camera_nudged");
   EXPECT_GT(canvas_change(grid, nudged), 200) << "the grid did not move";
 
+  // The nudge keys: Page Up twice (1 cm higher), Ctrl+Right once (0.05 degree of roll).
+  ASSERT_EQ(run(x("key Page_Up Page_Up ctrl+Right")), 0);
+  std::this_thread::sleep_for(300ms);
+
   // Save camera: the nudged camera beside the folder of frames.
   const std::filesystem::path saved = dir() / "frames-camera.json";
   click(916, 572);
   ASSERT_TRUE(wait_for([&] { return std::filesystem::exists(saved); }, 10s)) << "no camera file written";
   const fieldlines::GroundCamera camera = fieldlines::load_camera_file(saved);
   EXPECT_NEAR(camera.pitch_rad / kDeg, 31.2, 1e-6);
-  EXPECT_NEAR(camera.roll_rad / kDeg, 0.5, 1e-6);
-  EXPECT_NEAR(camera.height_m, 0.65, 1e-9);
+  EXPECT_NEAR(camera.roll_rad / kDeg, 0.55, 1e-6);
+  EXPECT_NEAR(camera.height_m, 0.66, 1e-9);
 
   // Fit from the lines runs in the background and shows its result or its reason; the window
   // keeps drawing meanwhile and after.
