@@ -166,9 +166,7 @@ TEST_F(CliDetect, FeaturesWriteIntersectionsAndEllipses) {
                 .exit_code, 0);
   ASSERT_EQ(run({"detect", "--quiet", "--json", off.string(), path.string()}).exit_code, 0);
   EXPECT_TRUE(fs::exists(draw / "t.png"));
-  fieldlines::DetectorParams params;
-  params.stripes = params.intersections = params.centre_circle = true;
-  fieldlines::LineDetector detector(params);
+  fieldlines::LineDetector detector(fieldlines::with_every_feature({}));  // what --features runs
   detector.detect(img);
   const fieldlines::FieldFeatures& expected = detector.features();
   ASSERT_FALSE(expected.intersections.empty());

@@ -65,9 +65,7 @@ TEST(FieldPlace, NoneWithoutTheCircleOrALineThroughIt) {
 TEST(FieldPlace, OnRenderedFramesThroughTheirOwnCamera) {
   fl::synth::SynthParams params;
   params.field.scene = fl::synth::Scene::Kid;
-  fl::DetectorParams dp;
-  dp.stripes = dp.intersections = dp.centre_circle = true;
-  fl::LineDetector detector(dp);
+  fl::LineDetector detector(fl::with_every_feature({}));
   int placed = 0;
   for (int index = 0; index < 40 && placed < 4; ++index) {
     const fl::synth::SynthSample s = fl::synth::generate(params, 31, index);

@@ -205,9 +205,7 @@ TEST(GroundFeatures, BadParametersAreRefused) {
 TEST(GroundFeatures, TheDetectorProjectsItsFeaturesWhenTheCameraIsSet) {
   fl::synth::SynthParams params;
   params.field.scene = fl::synth::Scene::Kid;
-  fl::DetectorParams dp;
-  dp.stripes = dp.intersections = dp.centre_circle = true;
-  fl::LineDetector detector(dp);
+  fl::LineDetector detector(fl::with_every_feature({}));
   std::size_t segments = 0, boundary = 0;
   for (const int index : {2, 7, 11}) {
     const fl::synth::SynthSample s = fl::synth::generate(params, 5150, index);
