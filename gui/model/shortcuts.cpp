@@ -8,6 +8,10 @@ namespace {
 
 constexpr Chord key(Key k) { return {k, false, false}; }
 constexpr Chord ctrl(Key k, bool shift = false) { return {k, true, shift}; }
+// A key that moves the Camera tab's camera one step (camera_nudge.hpp); held, it repeats.
+constexpr Shortcut nudge(Chord chord, std::string_view description, CameraAxis axis, int direction) {
+  return {chord, Action::NudgeCamera, description, {}, -1, true, FeatureLayer::Count, {axis, direction}};
+}
 
 constexpr std::array kShortcuts{
     Shortcut{key(Key::M), Action::LabelMarking, "label the hovered segment marking"},
@@ -31,12 +35,12 @@ constexpr std::array kShortcuts{
     Shortcut{key(Key::I), Action::ToggleFeatureLayer, "show / hide the line intersections (L, T, X)", {}, -1, false, FeatureLayer::Intersections},
     Shortcut{key(Key::O), Action::ToggleFeatureLayer, "show / hide the centre circle", {}, -1, false, FeatureLayer::CentreCircle},
     Shortcut{key(Key::S), Action::ToggleFeatureLayer, "show / hide the stripes' centre lines and widths", {}, -1, false, FeatureLayer::Stripes},
-    Shortcut{key(Key::Up), Action::NudgeCamera, "Camera tab: tilt the camera up a step (pitch -0.05 degree)", {}, -1, true, FeatureLayer::Count, {CameraAxis::Pitch, -1}},
-    Shortcut{key(Key::Down), Action::NudgeCamera, "Camera tab: tilt the camera down a step (pitch +0.05 degree)", {}, -1, true, FeatureLayer::Count, {CameraAxis::Pitch, 1}},
-    Shortcut{ctrl(Key::Left), Action::NudgeCamera, "Camera tab: roll the camera anticlockwise a step (-0.05 degree)", {}, -1, true, FeatureLayer::Count, {CameraAxis::Roll, -1}},
-    Shortcut{ctrl(Key::Right), Action::NudgeCamera, "Camera tab: roll the camera clockwise a step (+0.05 degree)", {}, -1, true, FeatureLayer::Count, {CameraAxis::Roll, 1}},
-    Shortcut{key(Key::PageUp), Action::NudgeCamera, "Camera tab: raise the camera a step (+0.5 cm)", {}, -1, true, FeatureLayer::Count, {CameraAxis::Height, 1}},
-    Shortcut{key(Key::PageDown), Action::NudgeCamera, "Camera tab: lower the camera a step (-0.5 cm)", {}, -1, true, FeatureLayer::Count, {CameraAxis::Height, -1}},
+    nudge(key(Key::Up), "Camera tab: tilt the camera up a step (pitch -0.05 degree)", CameraAxis::Pitch, -1),
+    nudge(key(Key::Down), "Camera tab: tilt the camera down a step (pitch +0.05 degree)", CameraAxis::Pitch, 1),
+    nudge(ctrl(Key::Left), "Camera tab: roll the camera anticlockwise a step (-0.05 degree)", CameraAxis::Roll, -1),
+    nudge(ctrl(Key::Right), "Camera tab: roll the camera clockwise a step (+0.05 degree)", CameraAxis::Roll, 1),
+    nudge(key(Key::PageUp), "Camera tab: raise the camera a step (+0.5 cm)", CameraAxis::Height, 1),
+    nudge(key(Key::PageDown), "Camera tab: lower the camera a step (-0.5 cm)", CameraAxis::Height, -1),
     Shortcut{ctrl(Key::Z), Action::Undo, "undo (one step per user action)"},
     Shortcut{ctrl(Key::Z, true), Action::Redo, "redo"},
     Shortcut{ctrl(Key::Y), Action::Redo, "redo"},
