@@ -76,6 +76,44 @@ TEST(FieldBoundary, AGreenCurtainAboveAWallIsNotTheField) {
   EXPECT_LT(b.y_at(100), horizon(100) - wall) << "without the band's cost the curtain is the field";
 }
 
+// A light floor strip 24 px tall between this field and the next one behind it, whose turf
+// shows 40 px tall between the legs of people standing on the strip (Humanoid, Montreal): the
+// strip reads as paint, which never ends the field, so the scan crosses it. A band with paint
+// in it half the gap long costs as a bare one: the turf beyond does not pay for it, and the
+// top settles at this field's edge. Without that rule the next field is taken for this one.
+TEST(FieldBoundary, AFloorStripBeforeTheNextFieldIsNotTheField) {
+  cv::Mat img = field_frame();
+  const int strip = 24, next = 40;
+  for (int x = 0; x < 640; ++x) {
+    const int edge = static_cast<int>(std::lround(horizon(float(x))));
+    cv::line(img, {x, edge - strip}, {x, edge - 1}, cv::Scalar(200, 205, 210));
+    const bool leg = x % 80 < 30;
+    cv::line(img, {x, edge - strip - next}, {x, edge - strip - 1}, leg ? cv::Scalar(40, 40, 60) : cv::Scalar(50, 140, 40));
+  }
+  img = fl::test::noisy(img);
+  fl::FieldBoundary b;
+  fl::find_field_boundary(img, b);
+  ASSERT_FALSE(b.empty());
+  for (float x = 0; x < 640; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
+  fl::FieldBoundaryParams paint_free;
+  paint_free.paint_band_fraction = 10;  // longer than any column: paint is never a band
+  fl::find_field_boundary(img, b, paint_free);
+  EXPECT_LT(b.y_at(320), horizon(320) - strip) << "without the rule the next field is this one";
+}
+
+// A line 20 px wide across the frame a few rows below its top, with turf above it up to the
+// frame's edge (a camera looking down near a line): nothing above the frame is seen, so the
+// few rows of turf there do not have to pay for the line, and the line stays on the field.
+TEST(FieldBoundary, AWideLineUnderTheFramesTopStaysOnTheField) {
+  cv::Mat img(480, 640, CV_8UC3, cv::Scalar(50, 140, 40));
+  cv::rectangle(img, {0, 6}, {639, 25}, cv::Scalar(245, 245, 245), cv::FILLED);
+  img = fl::test::noisy(img);
+  fl::FieldBoundary b;
+  fl::find_field_boundary(img, b);
+  ASSERT_FALSE(b.empty());
+  for (float x = 0; x < 640; x += 16) EXPECT_LT(b.y_at(x), 4) << "x " << x;
+}
+
 // A band of the field's surround along its edge (MSL Bangkok: a darker carpet strip), 0.065 in
 // chromaticity from the turf: within the median's loose tolerance, outside the turf colours the
 // frame measures. With them the boundary keeps to the turf's edge; with the loose tolerance it

@@ -19,25 +19,30 @@ double cross(const Point& o, const Point& a, const Point& b) {
   return double(a.x - o.x) * (b.y - o.y) - double(a.y - o.y) * (b.x - o.x);
 }
 
-// The column's top, settled: scanning down from `top`, each field sample weighs +1 and a band of
-// at least `band` px without field (paint is neither) weighs -cost per sample; the top moves to
-// the field sample above which the weight is least, the lowest on a tie (nothing moves when all
-// that lies above pays for itself). Stops once one more band inside the field (shorter than
-// the gap) could no longer bring the weight back below its least.
-int settle_top(const cv::Mat& bgr8, const FieldPixel& pixel, int x, int top, int row_step, int band, float cost,
-               int gap) {
+// The column's top, settled: scanning down from `top`, each field sample weighs +1 and a band
+// without field -cost per sample, when it is at least `band` px long, or `paint_band` px with at
+// least a third of it paint: a light floor strip before the next field behind this one reads as
+// paint, which the scan crosses (a painted line has this field beyond it, which pays for it).
+// Not when the column's field reaches the frame's top: what lies above it is unseen, and a wide
+// line under the top edge is no floor. The top moves to the field sample above which the weight
+// is least, the lowest on a tie (nothing moves when all that lies above pays for itself). Stops
+// once one more band inside the field (shorter than the gap) could no longer bring the weight
+// back below its least.
+int settle_top(const cv::Mat& bgr8, const FieldPixel& pixel, int x, int top, int row_step, int band, int paint_band,
+               float cost, int gap) {
   const float give_up = cost * float(gap / row_step);
   float weight = 0, least = 0;
-  int settled = top, run = 0;
+  int settled = top, bare = 0, painted = 0;  // the current band's samples without field
   for (int y = top; y < bgr8.rows; y += row_step) {
     const std::uint8_t* p = bgr8.ptr<std::uint8_t>(y) + 3 * x;
     if (pixel.field(p)) {
-      if (run * row_step >= band) weight -= cost * float(run);
-      run = 0;
+      const bool floor_strip = top >= row_step && 2 * painted >= bare && (bare + painted) * row_step >= paint_band;
+      if (bare * row_step >= band || floor_strip) weight -= cost * float(bare + painted);
+      bare = painted = 0;
       if (weight <= least) least = weight, settled = y;
       if ((weight += 1) - least > give_up) break;
-    } else if (!pixel.paint(p)) {
-      ++run;
+    } else {
+      ++(pixel.paint(p) ? painted : bare);
     }
   }
   return settled;
@@ -91,7 +96,8 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   // field the sample up to `jump` steps up is tested first, and those between are skipped when
   // it is field: a few reads per column instead of one per step, and the same tops.
   const int jump = std::clamp(gap / row_step, 0, std::max(params.max_jump, 0));
-  const int band = std::max(row_step, static_cast<int>(std::lround(params.band_fraction * gap)));
+  const auto share_of_gap = [&](double f) { return std::max(row_step, static_cast<int>(std::lround(f * gap))); };
+  const int band = share_of_gap(params.band_fraction), paint_band = share_of_gap(params.paint_band_fraction);
   int scanned = 0;
   for (int x = column_step / 2; x < bgr8.cols; x += column_step) {
     ++scanned;
@@ -118,7 +124,7 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
       }
     }
     if (top >= 0)
-      out.columns.push_back({float(x), float(settle_top(bgr8, pixel, x, top, row_step, band, params.band_cost, gap))});
+      out.columns.push_back({float(x), float(settle_top(bgr8, pixel, x, top, row_step, band, paint_band, params.band_cost, gap))});
   }
   if (out.columns.size() < std::max<std::size_t>(2, static_cast<std::size_t>(params.min_columns * scanned))) return;
   // Median of each column's top with its neighbours (a fixed window: no allocation). The

@@ -41,6 +41,8 @@ struct FieldBoundaryParams {
   // costs this many field samples per sample: the field above it must outweigh it to count.
   double band_fraction = 0.8;
   float band_cost = 2.0f;
+  // ...and a band at least a third paint this share (a light floor strip before the next field).
+  double paint_band_fraction = 0.5;
   double min_columns = 0.25;   // columns with field needed, as a share: fewer is no boundary
   float chroma_tolerance = 0.07f;       // |r/s - r_f/s_f| + |g/s - g_f/s_f|, s = r + g + b
   // ...and this with the frame's turf colours, which hold the turf in every light the frame
