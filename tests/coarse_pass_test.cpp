@@ -15,11 +15,8 @@
 namespace fieldlines {
 namespace {
 
-// Turf in blocks of 4 px whose brightness varies by 45 % (artificial turf seen up close), a
-// white line 40 px wide from row 380 (left) to 412 (right) whose edges jump by up to 3 px from
-// column to column, and camera noise.
-cv::Mat textured_turf_with_a_near_line() {
-  cv::RNG rng(3);
+// Turf in blocks of 4 px whose brightness varies by 45 % (artificial turf seen up close).
+cv::Mat textured_turf(cv::RNG& rng) {
   cv::Mat blocks(121, 161, CV_32F), texture;
   rng.fill(blocks, cv::RNG::NORMAL, 0, 1);
   cv::resize(blocks, texture, cv::Size(644, 484), 0, 0, cv::INTER_NEAREST);
@@ -30,6 +27,14 @@ cv::Mat textured_turf_with_a_near_line() {
       clean.at<cv::Vec3b>(y, x) = {cv::saturate_cast<std::uint8_t>(50 * k), cv::saturate_cast<std::uint8_t>(140 * k),
                                    cv::saturate_cast<std::uint8_t>(40 * k)};
     }
+  return clean;
+}
+
+// That turf, a white line 40 px wide from row 380 (left) to 412 (right) whose edges jump by up
+// to 3 px from column to column, and camera noise.
+cv::Mat textured_turf_with_a_near_line() {
+  cv::RNG rng(3);
+  cv::Mat clean = textured_turf(rng);
   for (int x = 0; x < 640; ++x) {
     const int top = static_cast<int>(380 + 0.05 * x) + rng.uniform(-3, 4);
     for (int y = top; y < std::min(top + 40, 480); ++y) clean.at<cv::Vec3b>(y, x) = {235, 240, 235};
@@ -66,6 +71,37 @@ TEST(CoarsePass, AWideNearLineOnTexturedTurfGetsSegmentsAlongItsEdges) {
   const float coarse_length = along_edge(coarse, 381) + along_edge(coarse, 421);
   EXPECT_LT(fine_length, 100) << "the full scale alone breaks up on this turf";
   EXPECT_GT(coarse_length, 900) << "the coarse pass (a third of the size) draws both edges end to end";
+}
+
+// A wide curved line near the camera on that turf (an arc of the centre circle: radii 420 and
+// 450 px about a centre below the frame): the coarse pass draws its edges, and each of its
+// segments along them stays within 3 px of its edge over all its length, as the full scale's
+// would; with the full scale's fit tolerance in its own pixels (4.5 px on the frame) it cut
+// chords across the curve.
+TEST(CoarsePass, ItsSegmentsOnACurvedLineStayOnTheEdge) {
+  cv::RNG rng(5);
+  cv::Mat clean = textured_turf(rng);
+  const cv::Point2f centre(320, 840);
+  constexpr float kInner = 420, kOuter = 450;
+  for (int y = 0; y < 480; ++y)
+    for (int x = 0; x < 640; ++x) {
+      const float r = std::hypot(float(x) - centre.x, float(y) - centre.y);
+      if (r >= kInner && r <= kOuter) clean.at<cv::Vec3b>(y, x) = {235, 240, 235};
+    }
+  const cv::Mat frame = test::noisy(clean);
+  float along = 0, worst = 0;
+  for (const Segment& s : detect(frame, 3)) {
+    const float length = std::hypot(s.x1 - s.x0, s.y1 - s.y0);
+    const auto off = [&](float x, float y, float radius) { return std::abs(std::hypot(x - centre.x, y - centre.y) - radius); };
+    for (const float radius : {kInner, kOuter}) {
+      if (off(s.x0, s.y0, radius) > 6 || off(s.x1, s.y1, radius) > 6) continue;  // not along this edge
+      along += length;
+      for (float t = 0; t <= 1; t += 0.05f)
+        worst = std::max(worst, off(s.x0 + t * (s.x1 - s.x0), s.y0 + t * (s.y1 - s.y0), radius));
+    }
+  }
+  EXPECT_GT(along, 400) << "the edges are drawn";
+  EXPECT_LE(worst, 3) << "a segment cuts across the curve";
 }
 
 // A painted line's two edges, sharp at the full scale, stay two segments with the coarse pass:

@@ -304,6 +304,34 @@ TEST(Stripes, AFarLineOnShadedTurfIsMeasuredAgainstTheTurfBesideIt) {
   EXPECT_EQ(stripes_at(299, 303), 0) << "the same paint on sunlit turf";
 }
 
+// The field's edge at row 200 against a light floor strip 16 px tall, with the next field's turf
+// beyond it: turf, "paint", turf, so its edge is a stripe by the profiles alone. Its paint lies
+// above the field boundary: with the boundary it is none; a line on the field beside it (rows
+// 300-305) stays a marking either way.
+TEST(Stripes, AStripeWhosePaintLiesBeyondTheFieldBoundaryIsNone) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  clean.rowRange(0, 140).setTo(kDark);
+  clean.rowRange(184, 200).setTo(kPaint);
+  clean.rowRange(300, 305).setTo(kPaint);
+  const cv::Mat frame = noisy(clean);
+  const std::optional<Rgb> field = estimate_field_colour(frame);
+  ASSERT_TRUE(field);
+  FieldBoundary boundary;
+  boundary.image_height = 480;
+  boundary.points = {{0, 200}, {639, 200}};
+  const auto markings = [&](const FieldBoundary* on_field) {
+    std::vector<Segment> edges{
+        {.x0 = 60, .y0 = 200, .x1 = 580, .y1 = 200, .grad_y = {-50, -50, -50}, .label = Label::Marking},
+        {.x0 = 60, .y0 = 300, .x1 = 580, .y1 = 300, .grad_y = {50, 50, 50}, .label = Label::Marking}};
+    StripeWorkspace work;
+    std::vector<Marking> out;
+    find_stripes(frame, field, edges, stripes_on(), work, out, ThinLines::Refused, Shape::Any, on_field);
+    return std::vector<Label>{edges[0].label, edges[1].label};
+  };
+  EXPECT_EQ(markings(nullptr), (std::vector<Label>{Label::Marking, Label::Marking})) << "both are stripes";
+  EXPECT_EQ(markings(&boundary), (std::vector<Label>{Label::None, Label::Marking}));
+}
+
 // The studio's one pass (run_with_thin_lines) flags what a run with thin lines refused and one
 // with them accepted flag, on every segment of synthetic frames of both scenes in every light
 // (the SSL field's far lines are thinner than a pixel).

@@ -48,9 +48,16 @@ namespace {
 // The parameters of the coarse pass: the minimum length in its own pixels. The anchors keep
 // their spacing in its pixels (coarse_scale times sparser on the frame): the lines it is for are
 // long, and a denser grid cost a third of a detect for no measured recall (docs/detector.md).
+// Its line fit may stray from the edge at most twice as far as the full scale's, on the frame:
+// at a third of the size, the full scale's tolerance in its own pixels let a segment run as a
+// chord across a curved line (the centre circle) 4.5 px off its edge (docs/detector.md).
 DetectorParams coarse_params_of(const DetectorParams& params) {
   DetectorParams p = params;
-  p.min_line_length = std::max(3, params.min_line_length / std::max(params.coarse_scale, 1));
+  const int f = std::max(params.coarse_scale, 1);
+  p.min_line_length = std::max(3, params.min_line_length / f);
+  const double tighter = std::min(1.0, 2.0 / f);
+  p.px_to_segment_dist = params.px_to_segment_dist * tighter;
+  p.line_fit_error = params.line_fit_error * tighter * tighter;  // px^2
   return p;
 }
 
@@ -203,7 +210,9 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   FieldFeatures& f = impl_->features;
   if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary, {}, &impl_->turf);
   label(out, gain, thresholds_, f.field_boundary);
-  if (stripes) find_stripes(*bgr, colours, out, params_, impl_->stripes, f.markings);
+  if (stripes)
+    find_stripes(*bgr, colours, out, params_, impl_->stripes, f.markings, ThinLines::Refused, Shape::Any,
+                 thresholds_.field_boundary_gate ? &f.field_boundary : nullptr);
   if (pieces) find_pieces(*bgr, gain, out);
   if (camera_) project_features(f, *camera_, ground_params_, impl_->ground);
 }

@@ -60,13 +60,21 @@ float FieldBoundary::y_at(float x) const {
   return b.x > a.x ? a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x) : b.y;
 }
 
+namespace {
+constexpr float kBlurPx = 4;  // a line's own blur: how far above the boundary still counts as on it
+}  // namespace
+
+bool lies_above(float x, float y, const FieldBoundary& boundary) {
+  return !boundary.empty() && y < boundary.y_at(x) - kBlurPx;
+}
+
 BoundaryPlace place_of(const Segment& s, const FieldBoundary& boundary) {
-  constexpr float kBlurPx = 4, kAlongShare = 0.03f, kMinAlongPx = 6;
+  constexpr float kAlongShare = 0.03f, kMinAlongPx = 6;
   if (boundary.empty()) return BoundaryPlace::Below;
   const float mx = 0.5f * (s.x0 + s.x1), my = 0.5f * (s.y0 + s.y1);
   const float d = my - boundary.y_at(mx);
   if (std::abs(d) <= std::max(kMinAlongPx, kAlongShare * float(boundary.image_height))) return BoundaryPlace::Along;
-  return d < -kBlurPx ? BoundaryPlace::Above : BoundaryPlace::Below;
+  return lies_above(mx, my, boundary) ? BoundaryPlace::Above : BoundaryPlace::Below;
 }
 
 Label gate_by_field_boundary(const Segment& s, const FieldBoundary& boundary) {

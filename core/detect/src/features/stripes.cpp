@@ -361,7 +361,7 @@ void pair_stripes(std::span<Segment> segments, std::vector<Candidate>& cs, const
 
 void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segment> segments,
                   const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out, ThinLines thin,
-                  Shape shape) {
+                  Shape shape, const FieldBoundary* on_field) {
   work.candidates.clear();
   if (!bgr8.empty() && bgr8.type() == CV_8UC3 && field) {
     const FieldPixel pixel(*field.median, FieldBoundaryParams{}, field.turf);
@@ -369,8 +369,11 @@ void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segm
       if (segments[i].label != Label::Marking) continue;
       Candidate c;
       c.segment = i;
-      if (measure_candidate(bgr8, pixel, segments[i], params, thin, work, c) && (shape == Shape::Any || straight(c)))
-        work.candidates.push_back(c);
+      if (measure_candidate(bgr8, pixel, segments[i], params, thin, work, c) && (shape == Shape::Any || straight(c))) {
+        const Marking centre = centre_of(segments[i], c);
+        if (!on_field || !lies_above(0.5f * (centre.x0 + centre.x1), 0.5f * (centre.y0 + centre.y1), *on_field))
+          work.candidates.push_back(c);
+      }
     }
   }
   pair_stripes(segments, work.candidates, params, out);

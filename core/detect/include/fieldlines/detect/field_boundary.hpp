@@ -76,6 +76,10 @@ struct FieldBoundary {
   float y_at(float x) const;
 };
 
+// Whether the point (x, y) lies above the boundary by more than a line's own blur (4 px); false
+// when the boundary is empty.
+bool lies_above(float x, float y, const FieldBoundary& boundary);
+
 // Where a segment's midpoint lies: above the boundary by more than a line's own blur, along it
 // (within 3 % of the image height, at least 6 px), or below it. Below when the boundary is empty.
 enum class BoundaryPlace { Above, Along, Below };

@@ -90,10 +90,13 @@ enum class Shape : std::uint8_t { Any, Straight };
 // `bgr8`: the frame the segments were detected in (8-bit BGR; anything else keeps no marking).
 // `field`: the frame's field colour (LineDetector measures it), with its turf colours when the
 // detector measured them (DetectorParams::stripe_turf_colours); empty: no turf anywhere.
+// `on_field`: when given, a stripe whose paint's centre lies above that field boundary by more
+// than a line's blur (lies_above) is none: paint lies on the field, and an edge along the
+// boundary whose bright side is beyond it is the field's edge against a light floor or boards.
 // Relabels `segments` in place and writes one Marking per stripe into `out` (cleared first).
 void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segment> segments,
                   const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out,
-                  ThinLines thin = ThinLines::Refused, Shape shape = Shape::Any);
+                  ThinLines thin = ThinLines::Refused, Shape shape = Shape::Any, const FieldBoundary* on_field = nullptr);
 
 // Every segment checked as a stripe as though its colours made it a marking, whatever its label:
 // what the stripes stage would keep of it under any thresholds. Calibration fits the markings on
