@@ -27,6 +27,22 @@ cv::Mat field_frame() {
 
 float horizon(float x) { return 100 + 40 * x / 639; }
 
+// Column x of `img` painted `colour` from `from` px above the carpet's edge up to `to` px above it.
+void above_the_edge(cv::Mat& img, int x, int from, int to, const cv::Scalar& colour) {
+  const int edge = static_cast<int>(std::lround(horizon(float(x))));
+  cv::line(img, {x, edge - to}, {x, edge - from - 1}, colour);
+}
+
+// The boundary of `img` (noise added) under `params`, checked to run along the carpet's edge.
+fl::FieldBoundary expect_along_the_edge(cv::Mat& img, const fl::FieldBoundaryParams& params = {}) {
+  img = fl::test::noisy(img);
+  fl::FieldBoundary b;
+  fl::find_field_boundary(img, b, params);
+  EXPECT_FALSE(b.empty());
+  for (float x = 0; x < 640; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
+  return b;
+}
+
 TEST(FieldBoundary, FollowsTheTopOfTheGreenPastRobotsAndWideLines) {
   cv::Mat img = field_frame();
   // A black robot standing on the field hides the green up to y 300 over 80 columns, and a
@@ -61,15 +77,10 @@ TEST(FieldBoundary, AGreenCurtainAboveAWallIsNotTheField) {
   cv::Mat img = field_frame();
   const int wall = 24;  // below the gap (6 % of 480 = 29 px) and above 0.8 of it
   for (int x = 0; x < 640; ++x) {
-    const int edge = static_cast<int>(std::lround(horizon(float(x))));
-    cv::line(img, {x, edge - wall}, {x, edge - 1}, cv::Scalar(20, 20, 20));
-    if (x < 240) cv::line(img, {x, edge - wall - 40}, {x, edge - wall - 1}, cv::Scalar(50, 140, 40));
+    above_the_edge(img, x, 0, wall, cv::Scalar(20, 20, 20));
+    if (x < 240) above_the_edge(img, x, wall, wall + 40, cv::Scalar(50, 140, 40));
   }
-  img = fl::test::noisy(img);
-  fl::FieldBoundary b;
-  fl::find_field_boundary(img, b);
-  ASSERT_FALSE(b.empty());
-  for (float x = 0; x < 640; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
+  fl::FieldBoundary b = expect_along_the_edge(img);
   fl::FieldBoundaryParams free_bands;
   free_bands.band_cost = 0;
   fl::find_field_boundary(img, b, free_bands);
@@ -85,16 +96,11 @@ TEST(FieldBoundary, AFloorStripBeforeTheNextFieldIsNotTheField) {
   cv::Mat img = field_frame();
   const int strip = 24, next = 40;
   for (int x = 0; x < 640; ++x) {
-    const int edge = static_cast<int>(std::lround(horizon(float(x))));
-    cv::line(img, {x, edge - strip}, {x, edge - 1}, cv::Scalar(200, 205, 210));
+    above_the_edge(img, x, 0, strip, cv::Scalar(200, 205, 210));
     const bool leg = x % 80 < 30;
-    cv::line(img, {x, edge - strip - next}, {x, edge - strip - 1}, leg ? cv::Scalar(40, 40, 60) : cv::Scalar(50, 140, 40));
+    above_the_edge(img, x, strip, strip + next, leg ? cv::Scalar(40, 40, 60) : cv::Scalar(50, 140, 40));
   }
-  img = fl::test::noisy(img);
-  fl::FieldBoundary b;
-  fl::find_field_boundary(img, b);
-  ASSERT_FALSE(b.empty());
-  for (float x = 0; x < 640; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
+  fl::FieldBoundary b = expect_along_the_edge(img);
   fl::FieldBoundaryParams paint_free;
   paint_free.paint_band_fraction = 10;  // longer than any column: paint is never a band
   fl::find_field_boundary(img, b, paint_free);
@@ -121,10 +127,7 @@ TEST(FieldBoundary, AWideLineUnderTheFramesTopStaysOnTheField) {
 TEST(FieldBoundary, TheFieldsSurroundIsNotTurfWhenTheTurfColoursAreMeasured) {
   cv::Mat img = field_frame();
   const int band = 10;
-  for (int x = 0; x < 640; ++x) {
-    const int edge = static_cast<int>(std::lround(horizon(float(x))));
-    cv::line(img, {x, edge - band}, {x, edge - 1}, cv::Scalar(64, 124, 40));
-  }
+  for (int x = 0; x < 640; ++x) above_the_edge(img, x, 0, band, cv::Scalar(64, 124, 40));
   const std::optional<fl::Rgb> field = fl::estimate_field_colour(img);
   ASSERT_TRUE(field);
   fl::TurfColours turf;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -53,6 +54,23 @@ int count(const std::vector<Segment>& segments, Label label) {
 float distance_to_line(float x, float y, cv::Point2f a, cv::Point2f b) {
   const float dx = b.x - a.x, dy = b.y - a.y;
   return std::abs((x - a.x) * dy - (y - a.y) * dx) / std::hypot(dx, dy);
+}
+
+// The labels find_stripes leaves on horizontal marking edges from x 60 to 580, one per (row,
+// paint below it), the paint on the side the flag says.
+std::vector<Label> stripe_labels(const cv::Mat& frame, const std::optional<Rgb>& field,
+                                 const std::vector<std::pair<float, bool>>& rows, const FieldBoundary* on_field = nullptr) {
+  std::vector<Segment> edges;
+  for (const auto& [y, paint_below] : rows) {
+    const float g = paint_below ? 50.f : -50.f;
+    edges.push_back({.x0 = 60, .y0 = y, .x1 = 580, .y1 = y, .grad_y = {g, g, g}, .label = Label::Marking});
+  }
+  StripeWorkspace work;
+  std::vector<Marking> out;
+  find_stripes(frame, field, edges, stripes_on(), work, out, ThinLines::Refused, Shape::Any, on_field);
+  std::vector<Label> labels;
+  for (const Segment& s : edges) labels.push_back(s.label);
+  return labels;
 }
 
 void expect_centre_line(const Marking& m, cv::Point2f a, cv::Point2f b, float width) {
@@ -292,13 +310,8 @@ TEST(Stripes, AFarLineOnShadedTurfIsMeasuredAgainstTheTurfBesideIt) {
   ASSERT_LT(dull_paint[0] + dull_paint[1] + dull_paint[2], 1.1 * field_sum) << "no brighter than the field colour by a tenth";
   // Each line's two edges, bright sides facing the paint.
   const auto stripes_at = [&](float top, float bottom) {
-    std::vector<Segment> edges{
-        {.x0 = 60, .y0 = top, .x1 = 580, .y1 = top, .grad_y = {50, 50, 50}, .label = Label::Marking},
-        {.x0 = 60, .y0 = bottom, .x1 = 580, .y1 = bottom, .grad_y = {-50, -50, -50}, .label = Label::Marking}};
-    StripeWorkspace work;
-    std::vector<Marking> out;
-    find_stripes(frame, field, edges, stripes_on(), work, out);
-    return count(edges, Label::Marking);
+    const std::vector<Label> labels = stripe_labels(frame, field, {{top, true}, {bottom, false}});
+    return static_cast<int>(std::count(labels.begin(), labels.end(), Label::Marking));
   };
   EXPECT_EQ(stripes_at(59, 63), 2) << "the line on shaded turf";
   EXPECT_EQ(stripes_at(299, 303), 0) << "the same paint on sunlit turf";
@@ -319,17 +332,10 @@ TEST(Stripes, AStripeWhosePaintLiesBeyondTheFieldBoundaryIsNone) {
   FieldBoundary boundary;
   boundary.image_height = 480;
   boundary.points = {{0, 200}, {639, 200}};
-  const auto markings = [&](const FieldBoundary* on_field) {
-    std::vector<Segment> edges{
-        {.x0 = 60, .y0 = 200, .x1 = 580, .y1 = 200, .grad_y = {-50, -50, -50}, .label = Label::Marking},
-        {.x0 = 60, .y0 = 300, .x1 = 580, .y1 = 300, .grad_y = {50, 50, 50}, .label = Label::Marking}};
-    StripeWorkspace work;
-    std::vector<Marking> out;
-    find_stripes(frame, field, edges, stripes_on(), work, out, ThinLines::Refused, Shape::Any, on_field);
-    return std::vector<Label>{edges[0].label, edges[1].label};
-  };
-  EXPECT_EQ(markings(nullptr), (std::vector<Label>{Label::Marking, Label::Marking})) << "both are stripes";
-  EXPECT_EQ(markings(&boundary), (std::vector<Label>{Label::None, Label::Marking}));
+  const std::vector<std::pair<float, bool>> edges{{200, false}, {300, true}};
+  EXPECT_EQ(stripe_labels(frame, field, edges), (std::vector<Label>{Label::Marking, Label::Marking}))
+      << "both are stripes";
+  EXPECT_EQ(stripe_labels(frame, field, edges, &boundary), (std::vector<Label>{Label::None, Label::Marking}));
 }
 
 // The studio's one pass (run_with_thin_lines) flags what a run with thin lines refused and one
