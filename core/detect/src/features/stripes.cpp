@@ -369,11 +369,13 @@ void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segm
       if (segments[i].label != Label::Marking) continue;
       Candidate c;
       c.segment = i;
-      if (measure_candidate(bgr8, pixel, segments[i], params, thin, work, c) && (shape == Shape::Any || straight(c))) {
+      if (!measure_candidate(bgr8, pixel, segments[i], params, thin, work, c) || (shape == Shape::Straight && !straight(c)))
+        continue;
+      if (on_field) {
         const Marking centre = centre_of(segments[i], c);
-        if (!on_field || !lies_above(0.5f * (centre.x0 + centre.x1), 0.5f * (centre.y0 + centre.y1), *on_field))
-          work.candidates.push_back(c);
+        if (lies_above(0.5f * (centre.x0 + centre.x1), 0.5f * (centre.y0 + centre.y1), *on_field)) continue;
       }
+      work.candidates.push_back(c);
     }
   }
   pair_stripes(segments, work.candidates, params, out);
