@@ -67,7 +67,7 @@ std::vector<Label> stripe_labels(const cv::Mat& frame, const std::optional<Rgb>&
   }
   StripeWorkspace work;
   std::vector<Marking> out;
-  find_stripes(frame, field, edges, stripes_on(), work, out, ThinLines::Refused, Shape::Any, on_field);
+  find_stripes(frame, field, edges, stripes_on(), work, out, ThinLines::Level, Shape::Any, on_field);
   std::vector<Label> labels;
   for (const Segment& s : edges) labels.push_back(s.label);
   return labels;
@@ -214,7 +214,7 @@ TEST(Stripes, PaintBesideAStraightLineIsNoBow) {
   // The line's upper edge, from x 205 to 405: its profiles at a tenth, three tenths, ..., of its
   // length; the middle one (x 305) runs down through the line and the arm.
   std::vector<Segment> edge{{.x0 = 205, .y0 = 229.5f, .x1 = 405, .y1 = 229.5f, .label = Label::Marking}};
-  find_stripes(frame, field, edge, stripes_on(), work, out, ThinLines::Refused, Shape::Straight);
+  find_stripes(frame, field, edge, stripes_on(), work, out, ThinLines::Level, Shape::Straight);
   ASSERT_EQ(out.size(), 1u) << "a straight line";
   EXPECT_EQ(edge[0].label, Label::Marking);
   EXPECT_NEAR(out[0].y0, 234.5f, 1);
@@ -255,43 +255,58 @@ TEST(Stripes, APerspectiveLineKeepsItsCentreAtBothEnds) {
   }
 }
 
-// A line thinner than a pixel on pale turf (the synthetic SSL field's): its one row blends a
-// little white into the turf, brighter than the field but still in its colour. With thin lines
-// accepted both of its edges are stripes and a row of brighter turf of the same colour is not;
-// the detector's default refuses both.
-TEST(Stripes, AThinLineBlendedIntoPaleTurfIsAStripeOnlyWhenThinLinesAreAccepted) {
+// A line thinner than a pixel on pale turf (the synthetic SSL field's, a real field's far lines):
+// its one row blends a little white into the turf, brighter than the field but still in its
+// colour. With thin lines accepted both of its edges are stripes, and neither a row of brighter
+// turf of the same colour nor a band of the blend several rows wide is. The detector's default
+// (Level) takes the long, level line too, but not the same paint standing upright (a thin grey
+// post) nor a short piece of it (a robot's limb).
+TEST(Stripes, AThinLineBlendedIntoPaleTurfIsAStripeWhenAcceptedOrLongAndLevel) {
   const cv::Scalar pale_turf(135, 168, 94);  // B, G, R
-  const auto frame_with_row = [&](const cv::Scalar& row) {
+  // The line on row 240 (column 320 when upright), `half` more rows either side.
+  const auto frame_with = [&](const cv::Scalar& colour, bool upright, int half = 0) {
     cv::Mat clean(480, 640, CV_8UC3, pale_turf);
-    clean.row(240).setTo(row);
+    (upright ? clean.col(320) : clean.rowRange(240 - half, 241 + half)).setTo(colour);
     return noisy(clean);
   };
-  const auto stripes = [&](const cv::Mat& frame, ThinLines thin) {
+  // The rising edge before the line and the falling one after it, bright sides facing the line:
+  // on the rows (or columns) either side, where a central difference sees it; `from`-`to` along it.
+  const auto stripes = [&](const cv::Mat& frame, ThinLines thin, bool upright, float from, float to, int half = 0) {
     const std::optional<Rgb> field = estimate_field_colour(frame);
     EXPECT_TRUE(field);
-    // The rising edge above the row and the falling one below it, bright sides facing the row:
-    // on the rows either side, where a central difference sees the row.
-    std::vector<Segment> edges{
-        {.x0 = 60, .y0 = 239, .x1 = 580, .y1 = 239, .grad_y = {50, 50, 50}, .label = Label::Marking},
-        {.x0 = 60, .y0 = 241, .x1 = 580, .y1 = 241, .grad_y = {-50, -50, -50}, .label = Label::Marking}};
+    std::vector<Segment> edges;
+    for (const float side : {-1.f, 1.f}) {
+      const float g = -50.f * side, at = side * float(half + 1);
+      edges.push_back(upright ? Segment{.x0 = 320 + at, .y0 = from, .x1 = 320 + at, .y1 = to, .grad_x = {g, g, g},
+                                        .label = Label::Marking}
+                              : Segment{.x0 = from, .y0 = 240 + at, .x1 = to, .y1 = 240 + at, .grad_y = {g, g, g},
+                                        .label = Label::Marking});
+    }
     StripeWorkspace work;
     std::vector<Marking> out;
     find_stripes(frame, field, edges, stripes_on(), work, out, thin);
     return count(edges, Label::Marking);
   };
-  constexpr double kWhite = 0.15;  // the row's share of paint
-  const cv::Scalar row = pale_turf * (1 - kWhite) + kPaint * kWhite;
-  const cv::Mat thin = frame_with_row(row);
-  const std::optional<Rgb> field = estimate_field_colour(thin);
+  constexpr double kWhite = 0.15;  // the line's share of paint
+  const cv::Scalar blend = pale_turf * (1 - kWhite) + kPaint * kWhite;
+  const cv::Mat level = frame_with(blend, false), upright = frame_with(blend, true);
+  const std::optional<Rgb> field = estimate_field_colour(level);
   ASSERT_TRUE(field);
-  // The blended row's chromaticity is within the field pixel rule's tolerance of the field's.
-  const double row_sum = row[0] + row[1] + row[2], field_sum = (*field)[0] + (*field)[1] + (*field)[2];
-  ASSERT_LE(std::abs(row[2] / row_sum - (*field)[0] / field_sum) + std::abs(row[1] / row_sum - (*field)[1] / field_sum),
+  // The blended line's chromaticity is within the field pixel rule's tolerance of the field's.
+  const double sum = blend[0] + blend[1] + blend[2], field_sum = (*field)[0] + (*field)[1] + (*field)[2];
+  ASSERT_LE(std::abs(blend[2] / sum - (*field)[0] / field_sum) + std::abs(blend[1] / sum - (*field)[1] / field_sum),
             FieldBoundaryParams{}.chroma_tolerance);
-  EXPECT_EQ(stripes(thin, ThinLines::Accepted), 2);
-  EXPECT_EQ(stripes(thin, ThinLines::Refused), 0);
-  const cv::Mat brighter_turf = frame_with_row(pale_turf * 1.2);
-  EXPECT_EQ(stripes(brighter_turf, ThinLines::Accepted), 0) << "brighter turf keeps the turf's colour";
+  EXPECT_EQ(stripes(level, ThinLines::Accepted, false, 60, 580), 2);
+  EXPECT_EQ(stripes(level, ThinLines::Level, false, 60, 580), 2) << "a long, level line";
+  EXPECT_EQ(stripes(level, ThinLines::Level, false, 300, 330), 0) << "a short piece of it";
+  EXPECT_EQ(stripes(level, ThinLines::Accepted, false, 300, 330), 2);
+  EXPECT_EQ(stripes(upright, ThinLines::Level, true, 40, 440), 0) << "the same paint standing upright";
+  EXPECT_EQ(stripes(upright, ThinLines::Accepted, true, 40, 440), 2);
+  const cv::Mat brighter_turf = frame_with(pale_turf * 1.2, false);
+  EXPECT_EQ(stripes(brighter_turf, ThinLines::Accepted, false, 60, 580), 0) << "brighter turf keeps the turf's colour";
+  // The same blend over 7 rows stays in the field colour too, but paint that wide would leave it:
+  // a band of light (a far sun stripe), no line.
+  EXPECT_EQ(stripes(frame_with(blend, false, 3), ThinLines::Accepted, false, 60, 580, 3), 0) << "a wide band";
 }
 
 // A far line in a wall's shade (the authors' SSL frames): its turf is darker than the frame's
@@ -338,9 +353,9 @@ TEST(Stripes, AStripeWhosePaintLiesBeyondTheFieldBoundaryIsNone) {
   EXPECT_EQ(stripe_labels(frame, field, edges, &boundary), (std::vector<Label>{Label::None, Label::Marking}));
 }
 
-// The studio's one pass (run_with_thin_lines) flags what a run with thin lines refused and one
-// with them accepted flag, on every segment of synthetic frames of both scenes in every light
-// (the SSL field's far lines are thinner than a pixel).
+// The studio's one pass (run_with_thin_lines) flags what a run with thin lines taken when level
+// and one with them accepted flag, on every segment of synthetic frames of both scenes in every light
+// (the SSL field's far lines are thinner than a pixel), each with a thin post added.
 TEST(Stripes, OnePassFlagsWhatTheTwoRunsFlag) {
   int thin_only = 0, stripes = 0;
   for (const synth::Scene scene : {synth::Scene::Ssl, synth::Scene::Kid}) {
@@ -349,19 +364,27 @@ TEST(Stripes, OnePassFlagsWhatTheTwoRunsFlag) {
     p.conditions = {synth::Condition::Artificial, synth::Condition::Natural, synth::Condition::Mixed,
                     synth::Condition::Dim, synth::Condition::Shadows};
     for (int i = 0; i < 10; ++i) {
-      const synth::SynthSample sample = synth::generate(p, 11, i);
+      synth::SynthSample sample = synth::generate(p, 11, i);
       std::vector<Segment> segments;
       LineDetector(DetectorParams{}).detect(sample.bgr, segments);
+      // An upright thin line (a thin grey post) with its two edges: taken only when thin lines
+      // are accepted, as the frames' own thin lines are long and level.
+      const int x = sample.bgr.cols / 3, top = sample.bgr.rows / 2, rows = sample.bgr.rows / 3;
+      cv::Mat post = sample.bgr(cv::Rect(x, top, 1, rows));
+      post = post * 0.85 + cv::Scalar::all(0.15 * 255);
+      for (const float side : {-1.f, 1.f})
+        segments.push_back({.x0 = float(x) + side, .y0 = float(top), .x1 = float(x) + side, .y1 = float(top + rows),
+                            .grad_x = {-50 * side, -50 * side, -50 * side}});
       const std::optional<Rgb> field = estimate_field_colour(sample.bgr);
-      StripeCheck refused, accepted, both;
-      ASSERT_EQ(refused.run(sample.bgr, field, segments, stripes_on(), ThinLines::Refused), field.has_value());
+      StripeCheck level, accepted, both;
+      ASSERT_EQ(level.run(sample.bgr, field, segments, stripes_on(), ThinLines::Level), field.has_value());
       accepted.run(sample.bgr, field, segments, stripes_on(), ThinLines::Accepted);
       ASSERT_EQ(both.run_with_thin_lines(sample.bgr, field, segments, stripes_on()), field.has_value());
-      EXPECT_EQ(both.flags(), refused.flags()) << i;
+      EXPECT_EQ(both.flags(), level.flags()) << i;
       EXPECT_EQ(both.thin_flags(), accepted.flags()) << i;
-      for (std::size_t k = 0; k < refused.flags().size(); ++k) {
-        stripes += refused.flags()[k];
-        thin_only += accepted.flags()[k] && !refused.flags()[k];
+      for (std::size_t k = 0; k < level.flags().size(); ++k) {
+        stripes += level.flags()[k];
+        thin_only += accepted.flags()[k] && !level.flags()[k];
       }
     }
   }
@@ -392,7 +415,7 @@ TEST(Stripes, TheCentreCirclesChordsAreNoStraightStripes) {
     StripeWorkspace work;
     std::vector<Marking> out;
     find_stripes(sample.bgr, field, any, stripes_on(), work, out);
-    find_stripes(sample.bgr, field, straight, stripes_on(), work, out, ThinLines::Refused, Shape::Straight);
+    find_stripes(sample.bgr, field, straight, stripes_on(), work, out, ThinLines::Level, Shape::Straight);
     for (std::size_t k = 0; k < segments.size(); ++k) {
       EXPECT_FALSE(straight[k].label == Label::Marking && any[k].label != Label::Marking) << "Straight keeps a subset";
       if (any[k].label != Label::Marking) continue;

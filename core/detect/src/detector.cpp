@@ -211,7 +211,7 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary, {}, &impl_->turf);
   label(out, gain, thresholds_, f.field_boundary);
   if (stripes)
-    find_stripes(*bgr, colours, out, params_, impl_->stripes, f.markings, ThinLines::Refused, Shape::Any,
+    find_stripes(*bgr, colours, out, params_, impl_->stripes, f.markings, ThinLines::Level, Shape::Any,
                  thresholds_.field_boundary_gate ? &f.field_boundary : nullptr);
   if (pieces) find_pieces(*bgr, gain, out);
   if (camera_) project_features(f, *camera_, ground_params_, impl_->ground);
@@ -312,7 +312,7 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
     collect_unpieced(segments, pieces, impl_->unpieced);
     label(impl_->unpieced, gain, short_pieces, f.field_boundary);
     find_stripes(bgr, turf, impl_->unpieced, params_, impl_->unpieced_stripes, impl_->unpieced_lines,
-                 ThinLines::Refused, Shape::Straight);
+                 ThinLines::Level, Shape::Straight);
     impl_->lines.insert(impl_->lines.end(), impl_->unpieced_lines.begin(), impl_->unpieced_lines.end());
     find_intersections(impl_->lines, params_, impl_->intersections, f.intersections, bgr.size());
     if (camera_ && params_.intersection_ground_tolerance > 0) {

@@ -76,13 +76,16 @@ struct StripeWorkspace {
   std::vector<const std::uint8_t*> pixels;  // one profile: the pixel of each step
 };
 
-// A line too thin to fill a pixel (the synthetic SSL field's 1 cm lines a few metres off) blends
-// a little grey into turf: its peak stays in the field colour. Accepted: such a peak is paint
-// when its chromaticity lies at least half-way from the turf's on both sides to what grey light
-// brightening that turf to the peak would give (brighter turf keeps the turf's chromaticity).
-// Refused by the detector: on real frames it also takes thin grey posts and robot parts on the
-// turf (docs/detector.md); the studio proposes such lines as paint (gui/model/proposal_gate.hpp).
-enum class ThinLines : std::uint8_t { Refused, Accepted };
+// A line too thin to fill a pixel (the synthetic SSL field's 1 cm lines a few metres off, a real
+// field's far lines) blends a little grey into turf: its peak stays in the field colour. Such a
+// peak is paint when its chromaticity lies at least half-way from the turf's on both sides to
+// what grey light brightening that turf to the peak would give (brighter turf keeps the turf's
+// chromaticity). Accepted: on any segment. Level: only on a segment at least 40 px long and
+// within 30 degrees of the image's rows, as the detector runs it: a far line seen from a robot's
+// height runs nearly level in the image, while thin grey posts and robot limbs stand upright or
+// are short (docs/detector.md). The studio proposes every such line as paint
+// (gui/model/proposal_gate.hpp).
+enum class ThinLines : std::uint8_t { Level, Accepted };
 
 // Which stripes a caller takes: any, or straight ones only (see above).
 enum class Shape : std::uint8_t { Any, Straight };
@@ -96,7 +99,7 @@ enum class Shape : std::uint8_t { Any, Straight };
 // Relabels `segments` in place and writes one Marking per stripe into `out` (cleared first).
 void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segment> segments,
                   const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out,
-                  ThinLines thin = ThinLines::Refused, Shape shape = Shape::Any, const FieldBoundary* on_field = nullptr);
+                  ThinLines thin = ThinLines::Level, Shape shape = Shape::Any, const FieldBoundary* on_field = nullptr);
 
 // Every segment checked as a stripe as though its colours made it a marking, whatever its label:
 // what the stripes stage would keep of it under any thresholds. Calibration fits the markings on
@@ -106,10 +109,10 @@ class StripeCheck {
   // False when the frame allows no check (no field colour, not 8-bit BGR); otherwise flags()
   // holds one flag per segment, 1 for a stripe.
   bool run(const cv::Mat& bgr8, const FieldColours& field, std::span<const Segment> segments,
-           const DetectorParams& params, ThinLines thin = ThinLines::Refused);
+           const DetectorParams& params, ThinLines thin = ThinLines::Level);
   const std::vector<std::uint8_t>& flags() const { return flags_; }
 
-  // run() with ThinLines::Refused into flags() and with ThinLines::Accepted into thin_flags(),
+  // run() with ThinLines::Level into flags() and with ThinLines::Accepted into thin_flags(),
   // from one set of profiles per segment (the two differ only in the profiles whose peak is
   // paint too thin to leave the field colour): the same flags as the two runs, at about half
   // their cost.
@@ -120,7 +123,7 @@ class StripeCheck {
  private:
   std::vector<Segment> checked_;
   StripeWorkspace work_;
-  std::vector<StripeWorkspace::Candidate> refused_;  // run_with_thin_lines()'s Refused candidates
+  std::vector<StripeWorkspace::Candidate> level_;  // run_with_thin_lines()'s ThinLines::Level candidates
   std::vector<Marking> stripes_;
   std::vector<std::uint8_t> flags_, thin_flags_;
 };
