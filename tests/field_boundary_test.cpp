@@ -107,6 +107,34 @@ TEST(FieldBoundary, AFloorStripBeforeTheNextFieldIsNotTheField) {
   EXPECT_LT(b.y_at(320), horizon(320) - strip) << "without the rule the next field is this one";
 }
 
+// A touchline 6 px wide right at the carpet's edge, the field's dark surround 10 px tall beyond
+// it, the grey hall above (MSL Bordeaux: the far touchline with no turf beyond it in view): the
+// boundary runs along the line's top, where the turf's edge is, not along its foot. Beside a
+// light floor instead of the dark surround the line could as well be the floor's edge: the
+// boundary stays at the turf, as it does when the paint is as wide as a floor strip.
+TEST(FieldBoundary, ALineAlongTheTurfsEdgeIsTheFields) {
+  const int line = 6;
+  const auto boundary_with = [&](int paint, const cv::Scalar& beyond) {
+    cv::Mat img = field_frame();
+    for (int x = 0; x < 640; ++x) {
+      above_the_edge(img, x, 0, paint, cv::Scalar(235, 240, 240));
+      above_the_edge(img, x, paint, paint + 10, beyond);
+    }
+    img = fl::test::noisy(img);
+    fl::FieldBoundary b;
+    fl::find_field_boundary(img, b);
+    EXPECT_FALSE(b.empty());
+    return b;
+  };
+  const cv::Scalar dark(20, 20, 20), light_floor(190, 195, 200);
+  const fl::FieldBoundary along = boundary_with(line, dark);
+  for (float x = 0; x < 640; x += 16) EXPECT_NEAR(along.y_at(x), horizon(x) - line, 3) << "x " << x;
+  const fl::FieldBoundary floor = boundary_with(line, light_floor);
+  for (float x = 0; x < 640; x += 16) EXPECT_NEAR(floor.y_at(x), horizon(x), 3) << "beside a light floor, x " << x;
+  const fl::FieldBoundary wide = boundary_with(24, dark);
+  for (float x = 0; x < 640; x += 16) EXPECT_NEAR(wide.y_at(x), horizon(x), 3) << "24 px of paint, x " << x;
+}
+
 // A line 20 px wide across the frame a few rows below its top, with turf above it up to the
 // frame's edge (a camera looking down near a line): nothing above the frame is seen, so the
 // few rows of turf there do not have to pay for the line, and the line stays on the field.

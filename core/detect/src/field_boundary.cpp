@@ -48,6 +48,29 @@ int settle_top(const cv::Mat& bgr8, const FieldPixel& pixel, int x, int top, int
   return settled;
 }
 
+// The column's top raised to the top of a line painted along the turf's edge: scanning up from
+// the top, at most `blur` samples in all that are neither paint nor dark, paint at most `line`
+// px long in one run, then a dark sample (the field's dark surround, a wall's foot). A touchline
+// often lies right at the turf's edge with nothing of the turf beyond it in view; paint never
+// raises the top elsewhere, since a white wall or a light floor reads as paint too (those are
+// wider, or not followed by dark). `top` when there is no such line.
+int edge_line_top(const cv::Mat& bgr8, const FieldPixel& pixel, int x, int top, int row_step, int line) {
+  constexpr int kBlurSamples = 4;
+  int blur = 0, painted = 0;
+  for (int y = top - row_step; y >= 0; y -= row_step) {
+    const std::uint8_t* p = bgr8.ptr<std::uint8_t>(y) + 3 * x;
+    if (pixel.paint(p)) {
+      const bool after_paint = painted > 0 && !pixel.paint(bgr8.ptr<std::uint8_t>(y + row_step) + 3 * x);
+      if (after_paint || (painted += row_step) > line) return top;  // two runs, or too wide
+    } else if (pixel.dark(p)) {
+      return painted > 0 ? y + row_step : top;
+    } else if (pixel.field(p) || ++blur > kBlurSamples) {
+      return top;
+    }
+  }
+  return top;
+}
+
 }  // namespace
 
 float FieldBoundary::y_at(float x) const {
@@ -106,6 +129,7 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   const int jump = std::clamp(gap / row_step, 0, std::max(params.max_jump, 0));
   const auto share_of_gap = [&](double f) { return std::max(row_step, static_cast<int>(std::lround(f * gap))); };
   const int band = share_of_gap(params.band_fraction), paint_band = share_of_gap(params.paint_band_fraction);
+  const int edge_line = static_cast<int>(std::lround(params.edge_line_fraction * bgr8.rows));
   int scanned = 0;
   for (int x = column_step / 2; x < bgr8.cols; x += column_step) {
     ++scanned;
@@ -125,14 +149,15 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
         since_green = paint = 0;
       } else if (top >= 0 && pixel.paint(p) && (paint += row_step) <= paint_cap) {
         // A painted line, however wide near the camera, is part of the field: it neither
-        // ends the field nor raises its top.
+        // ends the field nor raises its top (unless it lies along the turf's edge: edge_line_top).
       } else if (top >= 0 && (since_green += row_step) > gap) {
         break;  // the field ended above `top`; below the first field pixel (the robot's own
                 // body, a lens's dark corner) nothing ends it
       }
     }
-    if (top >= 0)
-      out.columns.push_back({float(x), float(settle_top(bgr8, pixel, x, top, row_step, band, paint_band, params.band_cost, gap))});
+    if (top < 0) continue;
+    const int settled = settle_top(bgr8, pixel, x, top, row_step, band, paint_band, params.band_cost, gap);
+    out.columns.push_back({float(x), float(settled == top ? edge_line_top(bgr8, pixel, x, top, row_step, edge_line) : settled)});
   }
   if (out.columns.size() < std::max<std::size_t>(2, static_cast<std::size_t>(params.min_columns * scanned))) return;
   // Median of each column's top with its neighbours (a fixed window: no allocation). The

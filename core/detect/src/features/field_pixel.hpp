@@ -46,6 +46,9 @@ class FieldPixel {
     const float r = bgr[2] / sum, g = bgr[1] / sum;
     return std::abs(r - r_) + std::abs(g - g_) <= tolerance_ || (turf_ && turf_->contains(r, g));
   }
+  bool dark(const std::uint8_t* bgr) const {
+    return float(bgr[0] + bgr[1] + bgr[2]) < p_.dark_brightness * sum_;
+  }
   bool paint(const std::uint8_t* bgr) const {
     const int sum = bgr[0] + bgr[1] + bgr[2];
     return float(sum) >= p_.paint_brightness * sum_ && near_grey(bgr, sum, p_.paint_chroma);

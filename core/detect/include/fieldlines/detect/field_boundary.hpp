@@ -2,26 +2,27 @@
 // The field boundary of a frame: where the field's green ends, as a polyline left to right.
 //
 // The field's colour is the frame's own (light.hpp's estimate); a pixel is field when its
-// chromaticity is within a tolerance of the field's and its brightness within a range of it:
-// a loose "green dominates" test also passes grey walls under a greenish camera.
-// Each sampled column is scanned from the bottom up (the field is below the camera's horizon)
-// for the top of its field: field pixels interrupted by less than a gap (a ball, a robot's
-// foot) belong to it, and so does paint (a line near the camera can be wider than any gap);
-// the first longer stretch without field ends it. A gap that long is the field's own only when
-// the field goes on well beyond it: the top then settles below any band without field nearly
-// as long as the gap (a wall) that less than twice its length of field lies above (a green
-// curtain or poster over the wall). Column tops are median-filtered across 7
-// neighbouring columns (a column running up a green poster, pole or shirt is an outlier, and so
-// are up to 3 side by side), then replaced by their upper convex hull: a robot or player standing
-// on the field hides the green behind it and pulls its columns down, but the boundary of a flat
-// field seen from inside it is convex in the image, so the hull bridges such notches
-// (B-Human's field boundary does the same). A notch at the frame's side has no column beyond it
-// to bridge to: a robot standing at the side, a fisheye's dark corner or turf in a light the
-// field colour misses pulls the hull's end down towards the bottom corner, and everything on
-// that side would lie above the field. So the hull's end pieces that fall towards the frame's
-// side more steeply than `max_end_slope` are dropped, and the boundary is held level from the
-// last piece kept (FieldBoundary::y_at). A frame without green gives an empty boundary.
-// Buffers are the caller's and keep their capacity: no allocation once warm.
+// chromaticity is within a tolerance of the field's and its brightness within a range of it: a
+// loose "green dominates" test also passes grey walls under a greenish camera. Each sampled column
+// is scanned from the bottom up (the field is below the camera's horizon) for the top of its field:
+// field pixels interrupted by less than a gap (a ball, a robot's foot) belong to it, and so does
+// paint (a line near the camera can be wider than any gap); the first longer stretch without field
+// ends it. A gap that long is the field's own only when the field goes on well beyond it: the top
+// then settles below any band without field nearly as long as the gap (a wall) that less than twice
+// its length of field lies above (a green curtain or poster over the wall). A line painted along
+// the turf's edge, with the field's dark surround right beyond it, raises the top to its own
+// (`edge_line_fraction`). Column tops are median-filtered across 7 neighbouring columns (a column
+// running up a green poster, pole or shirt is an outlier, and so are up to 3 side by side), then
+// replaced by their upper convex hull: a robot or player standing on the field hides the green
+// behind it and pulls its columns down, but the boundary of a flat field seen from inside it is
+// convex in the image, so the hull bridges such notches (B-Human's field boundary does the same). A
+// notch at the frame's side has no column beyond it to bridge to: a robot standing at the side, a
+// fisheye's dark corner or turf in a light the field colour misses pulls the hull's end down
+// towards the bottom corner, and everything on that side would lie above the field. So the hull's
+// end pieces that fall towards the frame's side more steeply than `max_end_slope` are dropped, and
+// the boundary is held level from the last piece kept (FieldBoundary::y_at). A frame without green
+// gives an empty boundary. Buffers are the caller's and keep their capacity: no allocation once
+// warm.
 #include <vector>
 
 #include <opencv2/core/mat.hpp>
@@ -53,6 +54,11 @@ struct FieldBoundaryParams {
   float paint_brightness = 1.4f;     // paint: s / s_f at least this...
   float paint_chroma = 0.1f;         // ...and |r/s - 1/3| + |g/s - 1/3| at most this
   double max_paint_fraction = 0.15;  // a run of paint longer than this share of the height is a wall
+  // Paint right above the field's top, at most this share of the height, then within a blur a
+  // dark sample: a line along the turf's edge, which raises the top to the dark (MSL Bordeaux:
+  // within 4 px 0.667 -> 0.834). Wider paint there is a white wall or a light floor.
+  double edge_line_fraction = 0.02;
+  float dark_brightness = 0.5f;  // dark: s / s_f below this (the field's surround, a wall's foot)
   // Inside the field, the sample up to this many steps up is tested first and those between
   // skipped when it is field (capped so that the skipped run is shorter than the gap): the same
   // tops as testing every sample (0), with a few reads per column.
