@@ -69,6 +69,21 @@ TEST(FieldBoundary, ARobotAtTheSideDoesNotPullTheEndDown) {
   EXPECT_NEAR(b.y_at(620), horizon(552), 6);
 }
 
+// A robot's sloping shoulder at the frame's left side (MSL Bordeaux, fisheye): it hides the
+// far edge down a slope of 0.9 rows per column, gentler than a wall's side but steeper than a
+// field's corner falls away. Its hull end is dropped and the boundary held level.
+TEST(FieldBoundary, ARobotsSlopingShoulderAtTheSideIsNoFieldCorner) {
+  cv::Mat img = field_frame();
+  const std::vector<cv::Point> shoulder{{0, 60}, {90, 60}, {90, 102}, {0, 183}};
+  cv::fillConvexPoly(img, shoulder, cv::Scalar(15, 15, 15));
+  img = fl::test::noisy(img);
+  fl::FieldBoundary b;
+  fl::find_field_boundary(img, b);
+  ASSERT_FALSE(b.empty());
+  for (float x = 96; x < 640; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
+  EXPECT_NEAR(b.y_at(0), horizon(96), 6) << "level with the first column seen, not down the shoulder";
+}
+
 // A dark wall along the field, shorter than the gap a ball may leave, with a green curtain 40 px
 // tall above it (the authors' SSL lab): the curtain is not the field, although the
 // scan crosses the wall to reach it; field less than twice the wall's length above a band that
@@ -190,9 +205,12 @@ TEST(FieldBoundary, SunAndShadeOnTheFieldKeepTheBoundaryAtItsEdge) {
   ASSERT_TRUE(field);
   fl::TurfColours turf;
   turf.measure(img, *field);
+  // Every hull end kept as it falls: the turf colours alone hold the sunlit side up.
+  fl::FieldBoundaryParams keep_ends;
+  keep_ends.max_end_slope = 1000;
   fl::FieldBoundary one_colour, turf_colours;
-  fl::find_field_boundary(img, *field, one_colour);
-  fl::find_field_boundary(img, *field, turf_colours, {}, &turf);
+  fl::find_field_boundary(img, *field, one_colour, keep_ends);
+  fl::find_field_boundary(img, *field, turf_colours, keep_ends, &turf);
   int right = 0, right_one_colour = 0;
   for (int x = 0; x < 640; x += 8) {
     right += std::abs(turf_colours.y_at(float(x)) - 150) <= 4;

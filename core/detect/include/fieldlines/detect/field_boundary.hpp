@@ -63,9 +63,10 @@ struct FieldBoundaryParams {
   // skipped when it is field (capped so that the skipped run is shorter than the gap): the same
   // tops as testing every sample (0), with a few reads per column.
   int max_jump = 8;
-  // Rows per column: a hull end falling towards the frame's side more steeply is dropped (45
-  // degrees: a field corner seen from inside falls away at half that).
-  float max_end_slope = 1.0f;
+  // Rows per column: a hull end falling towards the frame's side more steeply is dropped (37
+  // degrees: a field corner seen from inside falls away at about half that; a robot's shoulder
+  // at the side of a fisheye frame at 0.86). At 0.5 the synthetic frames' corners are cut.
+  float max_end_slope = 0.75f;
 };
 
 struct FieldBoundary {
