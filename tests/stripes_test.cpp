@@ -353,6 +353,24 @@ TEST(Stripes, AStripeWhosePaintLiesBeyondTheFieldBoundaryIsNone) {
   EXPECT_EQ(stripe_labels(frame, field, edges, &boundary), (std::vector<Label>{Label::None, Label::Marking}));
 }
 
+// A wide line near the camera along the frame's dark rim (a fisheye's corner, the robot's own
+// body at the frame's bottom): turf, paint, then dark to the frame's border. No turf returns,
+// but nothing lies beyond the rim: a stripe. The same paint with turf again past a dark band
+// (a robot's white bar beside its dark body) is none.
+TEST(Stripes, AWideLineAlongTheFramesDarkRimIsAStripe) {
+  const auto frame_with_dark_until = [](int dark_end) {
+    cv::Mat clean(480, 640, CV_8UC3, kTurf);
+    clean.rowRange(420, 440).setTo(kPaint);
+    clean.rowRange(440, dark_end).setTo(kDark);
+    return noisy(clean);
+  };
+  const cv::Mat rim = frame_with_dark_until(480), body = frame_with_dark_until(465);
+  const std::optional<Rgb> field = estimate_field_colour(rim);
+  ASSERT_TRUE(field);
+  EXPECT_EQ(stripe_labels(rim, field, {{419, true}}), std::vector<Label>{Label::Marking});
+  EXPECT_EQ(stripe_labels(body, estimate_field_colour(body), {{419, true}}), std::vector<Label>{Label::None});
+}
+
 // The studio's one pass (run_with_thin_lines) flags what a run with thin lines taken when level
 // and one with them accepted flag, on every segment of synthetic frames of both scenes in every light
 // (the SSL field's far lines are thinner than a pixel), each with a thin post added.

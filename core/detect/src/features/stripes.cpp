@@ -31,6 +31,7 @@ constexpr float kTwinMinSlackPx = 2;     // ...or this many pixels, whichever is
 // to +0.012, no precision lost; 25 px costs Humanoid 0.034 of precision, any angle De Locht 0.017.
 constexpr float kLevelMinLengthPx = 40, kLevelMaxSin = 0.5f;
 constexpr float kThinMaxWidthPx = 4;  // the widest paint that stays in the field colour
+constexpr float kRimShare = 0.1f;     // the frame's rim past paint reaches its border within this share of the height
 
 // How far a width may stray from a stripe's `width` and still be its own: twins' distance, a
 // profile's width for the bow.
@@ -124,30 +125,53 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
   // colour), and darker than half-way to the paint (blurred paint can pass the colour test).
   // Without it the bright side is a wall, a board or a post, not paint. The paint's peak lies
   // between the edge (give or take its blur) and that turf.
+  // Or the frame's own rim past the paint: a line near the camera running along the lens's dark
+  // corner or the robot's own body at the frame's bottom. Dark from step i on, and nothing but
+  // non-field from there to the frame's bottom or side border, close by: no robot's dark body
+  // beside its white bar stands there, with turf beyond it.
+  const auto rim_at = [&](int i) {
+    const float dark = kBlurShade * pixel.field_sum();
+    if (b[i] >= dark) return false;
+    const float reach = kRimShare * float(bgr.rows);
+    int seen = 0, dark_seen = 0;
+    for (float t = float(i - back); t <= float(i - back) + reach; t += 1.f) {
+      const long x = std::lround(px + t * sx), y = std::lround(py + t * sy);
+      if (x < 0 || x >= bgr.cols || y >= bgr.rows) return 4 * dark_seen >= 3 * seen;  // mostly dark
+      const std::uint8_t* p = bgr.ptr<std::uint8_t>(static_cast<int>(y)) + 3 * x;
+      if (y < 0 || pixel.field(p)) return false;
+      ++seen, dark_seen += brightness(p) < dark;
+    }
+    return false;
+  };
   const std::uint8_t* const outside_pixel = work.pixels[static_cast<std::size_t>(outside)];
   int far_turf = back, peak = std::max(back - kOuterPx, outside + 1);
   float level = 0;
+  bool rim = false;  // far_turf is the frame's rim, not turf
   for (;;) {
     do ++far_turf;
-    while (inside(far_turf) && !turf[far_turf] && !same_turf(outside_pixel, work.pixels[far_turf]));
+    while (inside(far_turf) && !turf[far_turf] && !same_turf(outside_pixel, work.pixels[far_turf]) &&
+           !(rim = rim_at(far_turf)));
     if (!inside(far_turf)) return {cut ? Verdict::Cut : Verdict::No};
     for (int i = peak + 1; i <= far_turf; ++i)
       if (b[i] > b[peak]) peak = i;
     if (peak == far_turf) continue;  // brighter than all before it: faint paint, not turf
-    // Half-way between the paint and the turf on either side, so blur widens nothing.
-    level = 0.5f * (b[peak] + 0.5f * (b[outside] + b[far_turf]));
+    // Half-way between the paint and the turf on either side, so blur widens nothing; against
+    // the rim, the turf outside alone.
+    const float far = rim ? b[outside] : b[far_turf];
+    level = 0.5f * (b[peak] + 0.5f * (b[outside] + far));
     if (b[far_turf] < level) break;
   }
   // Brighter than the turf beside it, or than the field colour where that is darker: turf in a
   // wall's shade is darker than the frame's field colour, and a thin far line on it less bright
   // than that (SSL: 4 of the 129 markings of the authors' 41 frames). Not below kShadedTurf of
   // the field colour: dim frames' turf texture would pass (docs/detector.md).
-  const float turf_beside = std::clamp(0.5f * (b[outside] + b[far_turf]), kShadedTurf * pixel.field_sum(), pixel.field_sum());
+  const float turf_beside =
+      std::clamp(0.5f * (b[outside] + (rim ? b[outside] : b[far_turf])), kShadedTurf * pixel.field_sum(), pixel.field_sum());
   if (b[peak] < kPaintContrast * turf_beside) return {};
   // Paint leaves the field colour; a line too thin to fill a pixel may not, and is taken only
   // when asked: its peak is turf with grey blended in, against the turf on both sides.
-  if (turf[peak] && !(take_thin && blended_paint(work.pixels[peak], work.pixels[outside]) &&
-                      blended_paint(work.pixels[peak], work.pixels[far_turf])))
+  if (turf[peak] && (rim || !(take_thin && blended_paint(work.pixels[peak], work.pixels[outside]) &&
+                               blended_paint(work.pixels[peak], work.pixels[far_turf]))))
     return {};
   int near_turf = peak - 1;
   while (near_turf >= 0 && !(turf[near_turf] && b[near_turf] < level)) --near_turf;

@@ -12,9 +12,11 @@
 //    the field colour (see ThinLines for paint too thin to leave it);
 //  - turf again past the paint, within the largest plausible width: in the field colour or in
 //    the colour of the turf outside (far turf in haze misses the frame's colour), and darker
-//    than half-way to the paint. The largest plausible width grows linearly towards the image
-//    bottom, where the field is nearest: `stripe_max_width` times the image height on the
-//    bottom row, a quarter of that on the top rows;
+//    than half-way to the paint; or the frame's dark rim (a fisheye's corner, the robot's own
+//    body at the frame's bottom): dark, and mostly dark with no field from there to the frame's
+//    bottom or side border within a tenth of the height. The largest plausible width grows
+//    linearly towards the image bottom, where the field is nearest: `stripe_max_width` times the
+//    image height on the bottom row, a quarter of that on the top rows;
 //  - between paint and turf on either side only a fade (at most 10 px, for motion blur, or a
 //    lens's colour fringe; none darker than 0.7 of the field colour): a robot's dark body beside
 //    its white bar is no turf.
