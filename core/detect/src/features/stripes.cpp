@@ -31,7 +31,7 @@ constexpr float kTwinMinSlackPx = 2;     // ...or this many pixels, whichever is
 // to +0.012, no precision lost; 25 px costs Humanoid 0.034 of precision, any angle De Locht 0.017.
 constexpr float kLevelMinLengthPx = 40, kLevelMaxSin = 0.5f;
 constexpr float kThinMaxWidthPx = 4;  // the widest paint that stays in the field colour
-constexpr float kRimShare = 0.1f;     // the frame's rim past paint reaches its border within this share of the height
+constexpr float kRimShare = 0.1f;     // the frame's rim reaches its border within this share of the height
 
 // How far a width may stray from a stripe's `width` and still be its own: twins' distance, a
 // profile's width for the bow.
@@ -120,15 +120,10 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
   int outside = std::min(back, read - 1);
   while (outside >= 0 && !turf[outside]) --outside;
   if (outside < 0) return {};
-  // Turf returns on the paint side: the first pixel past the edge in the field colour or in the
-  // colour of the turf outside (far turf in haze or in another light misses the frame's
-  // colour), and darker than half-way to the paint (blurred paint can pass the colour test).
-  // Without it the bright side is a wall, a board or a post, not paint. The paint's peak lies
-  // between the edge (give or take its blur) and that turf.
-  // Or the frame's own rim past the paint: a line near the camera running along the lens's dark
-  // corner or the robot's own body at the frame's bottom. Dark from step i on, and nothing but
-  // non-field from there to the frame's bottom or side border, close by: no robot's dark body
-  // beside its white bar stands there, with turf beyond it.
+  // The frame's own rim, which may take the far turf's place (below): a line near the camera
+  // running along the lens's dark corner or the robot's own body at the frame's bottom. Dark from
+  // step i on, then no field and mostly dark to the frame's bottom or side border, close by: a
+  // robot's dark body beside its white bar has turf beyond it, or stands off the border.
   const auto rim_at = [&](int i) {
     const float dark = kBlurShade * pixel.field_sum();
     if (b[i] >= dark) return false;
@@ -136,13 +131,19 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
     int seen = 0, dark_seen = 0;
     for (float t = float(i - back); t <= float(i - back) + reach; t += 1.f) {
       const long x = std::lround(px + t * sx), y = std::lround(py + t * sy);
+      if (y < 0) return false;  // out through the top: walls, not the frame's rim
       if (x < 0 || x >= bgr.cols || y >= bgr.rows) return 4 * dark_seen >= 3 * seen;  // mostly dark
       const std::uint8_t* p = bgr.ptr<std::uint8_t>(static_cast<int>(y)) + 3 * x;
-      if (y < 0 || pixel.field(p)) return false;
+      if (pixel.field(p)) return false;
       ++seen, dark_seen += brightness(p) < dark;
     }
     return false;
   };
+  // Turf returns on the paint side: the first pixel past the edge in the field colour or in the
+  // colour of the turf outside (far turf in haze or in another light misses the frame's
+  // colour), and darker than half-way to the paint (blurred paint can pass the colour test).
+  // Without it the bright side is a wall, a board or a post, not paint. The paint's peak lies
+  // between the edge (give or take its blur) and that turf, or the frame's rim.
   const std::uint8_t* const outside_pixel = work.pixels[static_cast<std::size_t>(outside)];
   int far_turf = back, peak = std::max(back - kOuterPx, outside + 1);
   float level = 0;
