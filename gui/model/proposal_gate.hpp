@@ -4,8 +4,9 @@
 // edge only along the field boundary (the gate, field_boundary.hpp). The review proposes
 // through it, so a proposal names nothing the detector would drop but one thing: a painted line
 // too thin to fill a pixel, which the detector's check refuses unless it is long and level
-// (stripes.hpp: ThinLines), is paint to anyone looking and is proposed as a marking. Each class is trained on its candidates
-// alone (fieldlines/train/review.hpp: LabelledCandidates), which leave such lines out.
+// (stripes.hpp: ThinLines), is paint to anyone looking and is proposed as a marking. Each class
+// is trained on its candidates alone (fieldlines/train/review.hpp: LabelledCandidates), which
+// leave such lines out.
 #include <cstddef>
 #include <cstdint>
 #include <span>

@@ -49,24 +49,26 @@ int settle_top(const cv::Mat& bgr8, const FieldPixel& pixel, int x, int top, int
 }
 
 // The column's top raised to the top of a line painted along the turf's edge: scanning up from
-// the top, at most `blur` samples in all that are neither paint nor dark, paint at most `line`
-// px long in one run, then a dark sample (the field's dark surround, a wall's foot). A touchline
-// often lies right at the turf's edge with nothing of the turf beyond it in view; paint never
-// raises the top elsewhere, since a white wall or a light floor reads as paint too (those are
-// wider, or not followed by dark). `top` when there is no such line.
+// the top, at most kBlurSamples samples in all that are neither paint nor dark, paint at most
+// `line` px long in one run, then a dark sample (the field's dark surround, a wall's foot). A
+// touchline often lies right at the turf's edge with nothing of the turf beyond it in view; paint
+// never raises the top elsewhere, since a white wall or a light floor reads as paint too (those
+// are wider, or not followed by dark). `top` when there is no such line.
 int edge_line_top(const cv::Mat& bgr8, const FieldPixel& pixel, int x, int top, int row_step, int line) {
   constexpr int kBlurSamples = 4;
   int blur = 0, painted = 0;
+  bool in_paint = false;  // the sample below y is paint
   for (int y = top - row_step; y >= 0; y -= row_step) {
     const std::uint8_t* p = bgr8.ptr<std::uint8_t>(y) + 3 * x;
-    if (pixel.paint(p)) {
-      const bool after_paint = painted > 0 && !pixel.paint(bgr8.ptr<std::uint8_t>(y + row_step) + 3 * x);
-      if (after_paint || (painted += row_step) > line) return top;  // two runs, or too wide
+    const bool paint = pixel.paint(p);
+    if (paint) {
+      if ((painted > 0 && !in_paint) || (painted += row_step) > line) return top;  // two runs, or too wide
     } else if (pixel.dark(p)) {
       return painted > 0 ? y + row_step : top;
     } else if (pixel.field(p) || ++blur > kBlurSamples) {
       return top;
     }
+    in_paint = paint;
   }
   return top;
 }

@@ -148,6 +148,7 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
   int far_turf = back, peak = std::max(back - kOuterPx, outside + 1);
   float level = 0;
   bool rim = false;  // far_turf is the frame's rim, not turf
+  float beyond = 0;  // the turf's brightness past the paint: the turf outside's against the rim
   for (;;) {
     do ++far_turf;
     while (inside(far_turf) && !turf[far_turf] && !same_turf(outside_pixel, work.pixels[far_turf]) &&
@@ -158,16 +159,15 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
     if (peak == far_turf) continue;  // brighter than all before it: faint paint, not turf
     // Half-way between the paint and the turf on either side, so blur widens nothing; against
     // the rim, the turf outside alone.
-    const float far = rim ? b[outside] : b[far_turf];
-    level = 0.5f * (b[peak] + 0.5f * (b[outside] + far));
+    beyond = rim ? b[outside] : b[far_turf];
+    level = 0.5f * (b[peak] + 0.5f * (b[outside] + beyond));
     if (b[far_turf] < level) break;
   }
   // Brighter than the turf beside it, or than the field colour where that is darker: turf in a
   // wall's shade is darker than the frame's field colour, and a thin far line on it less bright
   // than that (SSL: 4 of the 129 markings of the authors' 41 frames). Not below kShadedTurf of
   // the field colour: dim frames' turf texture would pass (docs/detector.md).
-  const float turf_beside =
-      std::clamp(0.5f * (b[outside] + (rim ? b[outside] : b[far_turf])), kShadedTurf * pixel.field_sum(), pixel.field_sum());
+  const float turf_beside = std::clamp(0.5f * (b[outside] + beyond), kShadedTurf * pixel.field_sum(), pixel.field_sum());
   if (b[peak] < kPaintContrast * turf_beside) return {};
   // Paint leaves the field colour; a line too thin to fill a pixel may not, and is taken only
   // when asked: its peak is turf with grey blended in, against the turf on both sides.
