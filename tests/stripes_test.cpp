@@ -222,6 +222,53 @@ TEST(Stripes, PaintBesideAStraightLineIsNoBow) {
   EXPECT_NEAR(out[0].width, 10, 1.5);
 }
 
+// A line smeared by motion: from the turf a step to 0.3 of the paint's contrast, a ramp to 0.7
+// over 10 rows, a step to the paint (24 rows), a sharp lower edge. Its gradient's ridges lie on
+// the two steps (rows 299.5 and 309.5), 5 px off the half-way crossing (row 304.5), where the
+// edge is: both edges drawn there move onto it; the sharp edge stays. A chord of a curve, whose
+// profiles' edges lie off any line through them, is not moved.
+TEST(Stripes, AnEdgeDrawnOnABlurRampIsMovedOntoThePaintsEdge) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  for (int i = 0; i < 10; ++i) {
+    const double a = 0.3 + 0.4 * i / 9.0;
+    clean.row(300 + i).setTo(kTurf + (kPaint - kTurf) * a);
+  }
+  clean.rowRange(310, 334).setTo(kPaint);
+  const cv::Mat frame = noisy(clean);
+  const std::optional<Rgb> field = estimate_field_colour(frame);
+  ASSERT_TRUE(field);
+  const float down = 50, up = -50;  // the colour gradient towards the paint
+  std::vector<Segment> edges{
+      {.x0 = 40, .y0 = 299.5f, .x1 = 600, .y1 = 299.5f, .grad_y = {down, down, down}, .label = Label::Marking},
+      {.x0 = 40, .y0 = 309.5f, .x1 = 600, .y1 = 309.5f, .grad_y = {down, down, down}, .label = Label::Marking},
+      {.x0 = 40, .y0 = 333.5f, .x1 = 600, .y1 = 333.5f, .grad_y = {up, up, up}, .label = Label::Marking}};
+  StripeWorkspace work;
+  std::vector<Marking> out;
+  find_stripes(frame, field, edges, stripes_on(), work, out);
+  for (const Segment& e : edges) EXPECT_EQ(e.label, Label::Marking);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(edges[i].y0, 304.5f, 1) << "edge " << i;
+    EXPECT_NEAR(edges[i].y1, 304.5f, 1) << "edge " << i;
+    EXPECT_FLOAT_EQ(edges[i].x0, 40);
+    EXPECT_FLOAT_EQ(edges[i].x1, 600);
+  }
+  EXPECT_FLOAT_EQ(edges[2].y0, 333.5f) << "a sharp edge stays where it was drawn";
+  EXPECT_FLOAT_EQ(edges[2].y1, 333.5f);
+
+  // The outer edge of a ring 12 px wide, radius 300 about (320, 700): its top near row 394. A
+  // chord from x 270 to 370 has its ends on the edge and its middle 4 px above it.
+  cv::Mat ring(480, 640, CV_8UC3, kTurf);
+  cv::circle(ring, {320, 700}, 300, kPaint, 12);
+  const cv::Mat ring_frame = noisy(ring);
+  const float outer = 306, y_end = 700 - std::sqrt(outer * outer - 50 * 50);
+  std::vector<Segment> chord{{.x0 = 270, .y0 = y_end, .x1 = 370, .y1 = y_end, .grad_y = {down, down, down},
+                              .label = Label::Marking}};
+  find_stripes(ring_frame, estimate_field_colour(ring_frame), chord, stripes_on(), work, out);
+  EXPECT_EQ(chord[0].label, Label::Marking);
+  EXPECT_FLOAT_EQ(chord[0].y0, y_end) << "a chord is not moved";
+  EXPECT_FLOAT_EQ(chord[0].y1, y_end);
+}
+
 // A line seen in perspective widens towards the camera, so its centre drifts away from either
 // edge: the centre line follows the paint at both ends, from one edge or from both. (A constant
 // offset from the edge, its median, misses the far end by about a quarter of the near width.)

@@ -32,6 +32,10 @@ constexpr float kTwinMinSlackPx = 2;     // ...or this many pixels, whichever is
 constexpr float kLevelMinLengthPx = 40, kLevelMaxSin = 0.5f;
 constexpr float kThinMaxWidthPx = 4;  // the widest paint that stays in the field colour
 constexpr float kRimShare = 0.1f;     // the frame's rim reaches its border within this share of the height
+// A marking segment is moved onto its paint's measured edge when that lies at least this far
+// off (beyond a sharp edge's ridge) and every profile's edge within kMaxEdgeSpreadPx of the
+// line through them (stripes.hpp).
+constexpr float kMinEdgeShiftPx = 2, kMaxEdgeSpreadPx = 1;
 
 // How far a width may stray from a stripe's `width` and still be its own: twins' distance, a
 // profile's width for the bow.
@@ -312,6 +316,14 @@ bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segmen
     out.width = median(sorted, n);
     std::tie(out.offset0, out.offset1) = offset_line(at[m], offsets[m], n, sorted);  // sorted: scratch now
     out.bow = bow(at[m], offsets[m], widths[m], n, out.offset0, out.offset1, out.width);
+    std::array<float, 32> edges;
+    const auto count = static_cast<std::size_t>(n);
+    for (std::size_t i = 0; i < count; ++i) edges[i] = offsets[m][i] - 0.5f * widths[m][i];
+    std::tie(out.edge0, out.edge1) = offset_line(at[m], edges, n, sorted);
+    out.edge_spread = 0;
+    for (std::size_t i = 0; i < count; ++i)
+      out.edge_spread = std::max(out.edge_spread, std::abs(edges[i] - (out.edge0 + at[m][i] * (out.edge1 - out.edge0))));
+    out.edge_median = median(edges, n);
     return true;
   };
   if (as_level) {
@@ -360,8 +372,18 @@ Marking merge(const Segment& a, const Candidate& ca, const Segment& b, const Can
   return {p.x, p.y, q.x, q.y, 0.5f * (ca.width + cb.width)};
 }
 
+// The segment moved onto its paint's measured edge when it lies on a blur ramp (stripes.hpp).
+void snap_to_edge(Segment& s, const Candidate& c) {
+  const float limit = kMaxBlurPx;
+  if (std::abs(c.edge_median) < kMinEdgeShiftPx || c.edge_spread > kMaxEdgeSpreadPx ||
+      std::abs(c.edge0) > limit || std::abs(c.edge1) > limit)
+    return;
+  s.x0 += c.edge0 * c.sx, s.y0 += c.edge0 * c.sy;
+  s.x1 += c.edge1 * c.sx, s.y1 += c.edge1 * c.sy;
+}
+
 // The stripes among `cs` (measured candidates of `segments`) paired with their twins into `out`
-// (cleared first); relabels the segments.
+// (cleared first); relabels the segments and moves those on a blur ramp (snap_to_edge).
 void pair_stripes(std::span<Segment> segments, std::vector<Candidate>& cs, const DetectorParams& params,
                   std::vector<Marking>& out) {
   out.clear();
@@ -385,14 +407,16 @@ void pair_stripes(std::span<Segment> segments, std::vector<Candidate>& cs, const
     }
     if (best < cs.size()) {
       cs[i].paired = cs[best].paired = true;
-      segments[cs[best].segment].label = Label::Marking;
       out.push_back(merge(a, cs[i], segments[cs[best].segment], cs[best]));
+      segments[cs[best].segment].label = Label::Marking;
+      snap_to_edge(segments[cs[best].segment], cs[best]);
     } else if (params.stripe_require_twin) {
       continue;
     } else {
       out.push_back(centre_of(a, cs[i]));
     }
     segments[cs[i].segment].label = Label::Marking;
+    snap_to_edge(segments[cs[i].segment], cs[i]);
   }
 }
 
@@ -451,6 +475,7 @@ bool StripeCheck::run_with_thin_lines(const cv::Mat& bgr8, const FieldColours& f
     if (level_stripe) level_.push_back(l);
   }
   const auto flags_of = [&](std::vector<Candidate>& cs, std::vector<std::uint8_t>& flags) {
+    checked_.assign(segments.begin(), segments.end());  // as measured: the first pass moves some
     for (Segment& s : checked_) s.label = Label::Marking;
     pair_stripes(checked_, cs, params, stripes_);
     for (const Segment& s : checked_) flags.push_back(s.label == Label::Marking);
