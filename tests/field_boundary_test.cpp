@@ -122,6 +122,34 @@ TEST(FieldBoundary, AFloorStripBeforeTheNextFieldIsNotTheField) {
   EXPECT_LT(b.y_at(320), horizon(320) - strip) << "without the rule the next field is this one";
 }
 
+// The same strip, but dark trousers and shoes on it and only a shoe's sliver of greenish turf
+// (2 px) showing between them, the dark legs above (Humanoid, Montreal: the next field between
+// people's legs): the scan crosses the strip, shorter than the gap, to that sliver; a lone run of
+// field that short above a band without field half the gap long carries the scan on but is no
+// top, so the boundary stays at this field's edge. Turf 8 px tall there is a top.
+TEST(FieldBoundary, ALoneGreenSliverAboveAFloorStripIsNoTop) {
+  const int strip = 20;
+  const auto frame_with = [&](int turf) {
+    cv::Mat img = field_frame();
+    for (int x = 0; x < 640; ++x) {
+      above_the_edge(img, x, 0, strip, cv::Scalar(60, 90, 130));  // a brown floor, too dark for paint
+      above_the_edge(img, x, strip, strip + turf, cv::Scalar(50, 140, 40));
+      above_the_edge(img, x, strip + turf, strip + turf + 60, cv::Scalar(30, 25, 25));
+    }
+    return img;
+  };
+  cv::Mat sliver = frame_with(2);
+  expect_along_the_edge(sliver);
+  fl::FieldBoundaryParams any_run;
+  any_run.min_top_samples = 1;
+  fl::FieldBoundary b;
+  fl::find_field_boundary(sliver, b, any_run);
+  EXPECT_LT(b.y_at(320), horizon(320) - strip) << "without the rule the sliver is the top";
+  cv::Mat turf = fl::test::noisy(frame_with(8));
+  fl::find_field_boundary(turf, b);
+  EXPECT_NEAR(b.y_at(320), horizon(320) - strip - 8, 3) << "a run of turf is a top";
+}
+
 // A touchline 6 px wide right at the carpet's edge, the field's dark surround 10 px tall beyond
 // it, the grey hall above (MSL Bordeaux: the far touchline with no turf beyond it in view): the
 // boundary runs along the line's top, where the turf's edge is, not along its foot. Beside a

@@ -127,19 +127,24 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   // Between two field samples none changes anything when they are at most `gap` apart: the
   // upper one resets the counters, and a run shorter than the gap ends nothing. So inside the
   // field the sample up to `jump` steps up is tested first, and those between are skipped when
-  // it is field: a few reads per column instead of one per step, and the same tops.
-  const int jump = std::clamp(gap / row_step, 0, std::max(params.max_jump, 0));
+  // it is field: a few reads per column instead of one per step, and the same tops (no band as
+  // long as the lone band fits between them either).
   const auto share_of_gap = [&](double f) { return std::max(row_step, static_cast<int>(std::lround(f * gap))); };
   const int band = share_of_gap(params.band_fraction), paint_band = share_of_gap(params.paint_band_fraction);
+  const int lone_band = share_of_gap(params.lone_band_fraction);
+  const int jump = std::clamp(std::min(gap, lone_band) / row_step, 0, std::max(params.max_jump, 0));
   const int edge_line = static_cast<int>(std::lround(params.edge_line_fraction * bgr8.rows));
   int scanned = 0;
   for (int x = column_step / 2; x < bgr8.cols; x += column_step) {
     ++scanned;
     int top = -1, since_green = 0, paint = 0;
+    int run = 0, bare = 0, bare_below = 0;  // samples: this run of field, of none, none below the run
     bool last_field = false;  // the sample below y
+    // Whether the current run of field may be the top (FieldBoundaryParams::min_top_samples).
+    const auto trusted = [&] { return top < 0 || run >= params.min_top_samples || bare_below * row_step < lone_band; };
     for (int y = bgr8.rows - 1 - row_step / 2; y >= 0; y -= row_step) {
       if (const int j = std::min(jump, y / row_step);
-          last_field && j > 0 && pixel.field(bgr8.ptr<std::uint8_t>(y - j * row_step) + 3 * x)) {
+          last_field && trusted() && j > 0 && pixel.field(bgr8.ptr<std::uint8_t>(y - j * row_step) + 3 * x)) {
         top = y -= j * row_step;
         since_green = paint = 0;
         continue;
@@ -147,7 +152,13 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
       const std::uint8_t* p = bgr8.ptr<std::uint8_t>(y) + 3 * x;
       last_field = pixel.field(p);
       if (last_field) {
-        top = y;
+        if (run == 0) bare_below = bare;
+        ++run, bare = 0;
+      } else {
+        run = 0, ++bare;
+      }
+      if (last_field) {
+        if (trusted()) top = y;  // a lone sample carries the scan on, but is no top
         since_green = paint = 0;
       } else if (top >= 0 && pixel.paint(p) && (paint += row_step) <= paint_cap) {
         // A painted line, however wide near the camera, is part of the field: it neither

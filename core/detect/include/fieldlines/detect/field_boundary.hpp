@@ -9,7 +9,9 @@
 // paint (a line near the camera can be wider than any gap); the first longer stretch without field
 // ends it. A gap that long is the field's own only when the field goes on well beyond it: the top
 // then settles below any band without field nearly as long as the gap (a wall) that less than twice
-// its length of field lies above (a green curtain or poster over the wall). A line painted along
+// its length of field lies above (a green curtain or poster over the wall). A lone run of field a
+// few samples long above a band without field half the gap long (a shoe's greenish sliver, the
+// next field's turf between people's legs) carries the scan on but is no top. A line painted along
 // the turf's edge, with the field's dark surround right beyond it, raises the top to its own
 // (`edge_line_fraction`). Column tops are median-filtered across 7 neighbouring columns (a column
 // running up a green poster, pole or shirt is an outlier, and so are up to 3 side by side), then
@@ -44,6 +46,12 @@ struct FieldBoundaryParams {
   float band_cost = 2.0f;
   // ...and a band at least a third paint this share (a light floor strip before the next field).
   double paint_band_fraction = 0.5;
+  // A run of field above a band without field at least this share of the gap long is the
+  // column's top only when it is at least `min_top_samples` long: a lone greenish sample (a shoe,
+  // the next field's turf between people's legs above the floor strip before it) carries the
+  // scan on but is no top. Humanoid montreal _aa_000001 within 4 px: 0.25 -> 0.84.
+  double lone_band_fraction = 0.5;
+  int min_top_samples = 3;
   double min_columns = 0.25;   // columns with field needed, as a share: fewer is no boundary
   float chroma_tolerance = 0.07f;       // |r/s - r_f/s_f| + |g/s - g_f/s_f|, s = r + g + b
   // ...and this with the frame's turf colours, which hold the turf in every light the frame
