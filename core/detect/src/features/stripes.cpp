@@ -373,17 +373,57 @@ Marking merge(const Segment& a, const Candidate& ca, const Segment& b, const Can
 }
 
 // The segment moved onto its paint's measured edge when it lies on a blur ramp (stripes.hpp).
-void snap_to_edge(Segment& s, const Candidate& c) {
+void snap_to_edge(Segment& s, Candidate& c) {
   const float limit = kMaxBlurPx;
   if (std::abs(c.edge_median) < kMinEdgeShiftPx || c.edge_spread > kMaxEdgeSpreadPx ||
       std::abs(c.edge0) > limit || std::abs(c.edge1) > limit)
     return;
   s.x0 += c.edge0 * c.sx, s.y0 += c.edge0 * c.sy;
   s.x1 += c.edge1 * c.sx, s.y1 += c.edge1 * c.sy;
+  c.moved = true;
+}
+
+// Whether `b` lies along `a` on the same side of the same paint: parallel as twins are, its
+// paint on a's side, both ends within a line's blur of a's line and over half of it beside a.
+bool along_same_edge(const Segment& a, const Candidate& ca, const Segment& b, const Candidate& cb) {
+  constexpr float kNearPx = 2;
+  if (std::abs(ca.ux * cb.ux + ca.uy * cb.uy) < kTwinCos || ca.sx * cb.sx + ca.sy * cb.sy <= 0) return false;
+  const float len_a = std::hypot(a.x1 - a.x0, a.y1 - a.y0), len_b = std::hypot(b.x1 - b.x0, b.y1 - b.y0);
+  const auto along = [&](float x, float y) { return (x - a.x0) * ca.ux + (y - a.y0) * ca.uy; };
+  const auto off = [&](float x, float y) { return std::abs((x - a.x0) * ca.sx + (y - a.y0) * ca.sy); };
+  if (off(b.x0, b.y0) > kNearPx || off(b.x1, b.y1) > kNearPx) return false;
+  const float t0 = along(b.x0, b.y0), t1 = along(b.x1, b.y1);
+  return std::min(len_a, std::max(t0, t1)) - std::max(0.f, std::min(t0, t1)) > 0.5f * std::min(len_a, len_b);
+}
+
+// Two marking segments that a move put on one painted edge (a ghost's two drawn steps) are one:
+// the longer, along its own line, spans both, and the shorter becomes none.
+void merge_doubles(std::span<Segment> segments, const std::vector<Candidate>& cs) {
+  const auto length = [](const Segment& s) { return std::hypot(s.x1 - s.x0, s.y1 - s.y0); };
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    if (!cs[i].moved) continue;
+    for (std::size_t j = 0; j < cs.size() && segments[cs[i].segment].label == Label::Marking; ++j) {
+      if (j == i || segments[cs[j].segment].label != Label::Marking ||
+          !along_same_edge(segments[cs[i].segment], cs[i], segments[cs[j].segment], cs[j]))
+        continue;
+      const bool i_longer = length(segments[cs[i].segment]) >= length(segments[cs[j].segment]);
+      Segment& keep = segments[(i_longer ? cs[i] : cs[j]).segment];
+      Segment& drop = segments[(i_longer ? cs[j] : cs[i]).segment];
+      const float dx = keep.x1 - keep.x0, dy = keep.y1 - keep.y0, len = std::hypot(dx, dy);
+      const float ux = dx / len, uy = dy / len;
+      const auto along = [&](float x, float y) { return (x - keep.x0) * ux + (y - keep.y0) * uy; };
+      const float t0 = std::min({0.f, along(drop.x0, drop.y0), along(drop.x1, drop.y1)});
+      const float t1 = std::max({len, along(drop.x0, drop.y0), along(drop.x1, drop.y1)});
+      const float x0 = keep.x0, y0 = keep.y0;
+      keep.x0 = x0 + t0 * ux, keep.y0 = y0 + t0 * uy, keep.x1 = x0 + t1 * ux, keep.y1 = y0 + t1 * uy;
+      drop.label = Label::None;
+    }
+  }
 }
 
 // The stripes among `cs` (measured candidates of `segments`) paired with their twins into `out`
-// (cleared first); relabels the segments and moves those on a blur ramp (snap_to_edge).
+// (cleared first); relabels the segments, moves those on a blur ramp (snap_to_edge) and merges
+// the doubles that makes.
 void pair_stripes(std::span<Segment> segments, std::vector<Candidate>& cs, const DetectorParams& params,
                   std::vector<Marking>& out) {
   out.clear();
@@ -418,6 +458,7 @@ void pair_stripes(std::span<Segment> segments, std::vector<Candidate>& cs, const
     segments[cs[i].segment].label = Label::Marking;
     snap_to_edge(segments[cs[i].segment], cs[i]);
   }
+  merge_doubles(segments, cs);
 }
 
 }  // namespace
