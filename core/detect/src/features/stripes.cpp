@@ -410,6 +410,7 @@ void merge_doubles(std::span<Segment> segments, const std::vector<Candidate>& cs
       Segment& keep = segments[(i_longer ? cs[i] : cs[j]).segment];
       Segment& drop = segments[(i_longer ? cs[j] : cs[i]).segment];
       const float dx = keep.x1 - keep.x0, dy = keep.y1 - keep.y0, len = std::hypot(dx, dy);
+      if (!(len > 0.f)) continue;
       const float ux = dx / len, uy = dy / len;
       const auto along = [&](float x, float y) { return (x - keep.x0) * ux + (y - keep.y0) * uy; };
       const float t0 = std::min({0.f, along(drop.x0, drop.y0), along(drop.x1, drop.y1)});
