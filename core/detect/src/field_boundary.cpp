@@ -127,12 +127,12 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   // Between two field samples none changes anything when they are at most `gap` apart: the
   // upper one resets the counters, and a run shorter than the gap ends nothing. So inside the
   // field the sample up to `jump` steps up is tested first, and those between are skipped when
-  // it is field: a few reads per column instead of one per step, and the same tops (no band as
-  // long as the lone band fits between them either).
+  // it is field: a few reads per column instead of one per step, and the same tops (nor does a
+  // lone band, min_top_samples, fit between the two).
   const auto share_of_gap = [&](double f) { return std::max(row_step, static_cast<int>(std::lround(f * gap))); };
   const int band = share_of_gap(params.band_fraction), paint_band = share_of_gap(params.paint_band_fraction);
   const int lone_band = share_of_gap(params.lone_band_fraction);
-  const int jump = std::clamp(std::min(gap, lone_band) / row_step, 0, std::max(params.max_jump, 0));
+  const int jump = std::clamp(std::min(gap / row_step, (lone_band - 1) / row_step), 0, std::max(params.max_jump, 0));
   const int edge_line = static_cast<int>(std::lround(params.edge_line_fraction * bgr8.rows));
   int scanned = 0;
   for (int x = column_step / 2; x < bgr8.cols; x += column_step) {
@@ -152,15 +152,14 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
       const std::uint8_t* p = bgr8.ptr<std::uint8_t>(y) + 3 * x;
       last_field = pixel.field(p);
       if (last_field) {
-        if (run == 0) bare_below = bare;
-        ++run, bare = 0;
-      } else {
-        run = 0, ++bare;
-      }
-      if (last_field) {
+        if (run++ == 0) bare_below = bare;
+        bare = 0;
         if (trusted()) top = y;  // a lone sample carries the scan on, but is no top
         since_green = paint = 0;
-      } else if (top >= 0 && pixel.paint(p) && (paint += row_step) <= paint_cap) {
+        continue;
+      }
+      run = 0, ++bare;
+      if (top >= 0 && pixel.paint(p) && (paint += row_step) <= paint_cap) {
         // A painted line, however wide near the camera, is part of the field: it neither
         // ends the field nor raises its top (unless it lies along the turf's edge: edge_line_top).
       } else if (top >= 0 && (since_green += row_step) > gap) {
