@@ -138,20 +138,20 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   for (int x = column_step / 2; x < bgr8.cols; x += column_step) {
     ++scanned;
     int top = -1, since_green = 0, paint = 0;
-    int run = 0, bare = 0, bare_below = 0;  // samples: this run of field, of none, none below the run
-    bool last_field = false;  // the sample below y
+    // Samples: the run of field ending at the sample below y (0: that sample is none), the run
+    // of none, the run of none below the current run of field.
+    int run = 0, bare = 0, bare_below = 0;
     // Whether the current run of field may be the top (FieldBoundaryParams::min_top_samples).
     const auto trusted = [&] { return top < 0 || run >= params.min_top_samples || bare_below * row_step < lone_band; };
     for (int y = bgr8.rows - 1 - row_step / 2; y >= 0; y -= row_step) {
       if (const int j = std::min(jump, y / row_step);
-          last_field && trusted() && j > 0 && pixel.field(bgr8.ptr<std::uint8_t>(y - j * row_step) + 3 * x)) {
+          run > 0 && trusted() && j > 0 && pixel.field(bgr8.ptr<std::uint8_t>(y - j * row_step) + 3 * x)) {
         top = y -= j * row_step;
         since_green = paint = 0;
         continue;
       }
       const std::uint8_t* p = bgr8.ptr<std::uint8_t>(y) + 3 * x;
-      last_field = pixel.field(p);
-      if (last_field) {
+      if (pixel.field(p)) {
         if (run++ == 0) bare_below = bare;
         bare = 0;
         if (trusted()) top = y;  // a lone sample carries the scan on, but is no top

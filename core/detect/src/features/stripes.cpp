@@ -337,17 +337,29 @@ Marking centre_of(const Segment& s, const Candidate& c) {
   return {s.x0 + c.offset0 * c.sx, s.y0 + c.offset0 * c.sy, s.x1 + c.offset1 * c.sx, s.y1 + c.offset1 * c.sy, c.width};
 }
 
+// Whether two candidates' edges are as parallel as twins are.
+bool parallel(const Candidate& ca, const Candidate& cb) { return std::abs(ca.ux * cb.ux + ca.uy * cb.uy) >= kTwinCos; }
+
+// b's ends in a's frame: how far along a (t, from a's first end) and off a's line towards a's
+// paint (n).
+struct Ends {
+  float t0, t1, n0, n1;
+};
+Ends ends_of(const Segment& b, const Segment& a, const Candidate& ca) {
+  return {(b.x0 - a.x0) * ca.ux + (b.y0 - a.y0) * ca.uy, (b.x1 - a.x0) * ca.ux + (b.y1 - a.y0) * ca.uy,
+          (b.x0 - a.x0) * ca.sx + (b.y0 - a.y0) * ca.sy, (b.x1 - a.x0) * ca.sx + (b.y1 - a.y0) * ca.sy};
+}
+
 // How far b's edge lies from a's along a's paint normal, when b is a's twin: parallel, its
 // paint facing a's, overlapping along a; negative otherwise.
 float twin_distance(const Segment& a, const Candidate& ca, const Segment& b, const Candidate& cb) {
-  if (std::abs(ca.ux * cb.ux + ca.uy * cb.uy) < kTwinCos) return -1;
+  if (!parallel(ca, cb)) return -1;
   if (ca.sx * cb.sx + ca.sy * cb.sy >= 0) return -1;  // the two paints must face each other
   const float mx = 0.5f * (b.x0 + b.x1) - a.x0, my = 0.5f * (b.y0 + b.y1) - a.y0;
   const float distance = mx * ca.sx + my * ca.sy;
   const float len = std::hypot(a.x1 - a.x0, a.y1 - a.y0);
-  const float t0 = (b.x0 - a.x0) * ca.ux + (b.y0 - a.y0) * ca.uy;
-  const float t1 = (b.x1 - a.x0) * ca.ux + (b.y1 - a.y0) * ca.uy;
-  if (std::max(t0, t1) <= 0 || std::min(t0, t1) >= len) return -1;
+  const Ends e = ends_of(b, a, ca);
+  if (std::max(e.t0, e.t1) <= 0 || std::min(e.t0, e.t1) >= len) return -1;
   return distance > 0 ? distance : -1;
 }
 
@@ -356,10 +368,7 @@ float twin_distance(const Segment& a, const Candidate& ca, const Segment& b, con
 // width shrinks with distance), and their mean measured width.
 Marking merge(const Segment& a, const Candidate& ca, const Segment& b, const Candidate& cb) {
   const float len = std::hypot(a.x1 - a.x0, a.y1 - a.y0);
-  const float t0 = (b.x0 - a.x0) * ca.ux + (b.y0 - a.y0) * ca.uy;
-  const float t1 = (b.x1 - a.x0) * ca.ux + (b.y1 - a.y0) * ca.uy;
-  const float n0 = (b.x0 - a.x0) * ca.sx + (b.y0 - a.y0) * ca.sy;  // b's ends from a's line
-  const float n1 = (b.x1 - a.x0) * ca.sx + (b.y1 - a.y0) * ca.sy;
+  const auto [t0, t1, n0, n1] = ends_of(b, a, ca);
   const float lo = std::min({0.f, t0, t1}), hi = std::max({len, t0, t1});
   // Half of b's distance from a's line at t along a; beyond b's ends, its distance there (b may
   // be short, and its few degrees carried along all of a would tilt the centre line).
@@ -387,13 +396,11 @@ void snap_to_edge(Segment& s, Candidate& c) {
 // paint on a's side, both ends within a line's blur of a's line and over half of it beside a.
 bool along_same_edge(const Segment& a, const Candidate& ca, const Segment& b, const Candidate& cb) {
   constexpr float kNearPx = 2;
-  if (std::abs(ca.ux * cb.ux + ca.uy * cb.uy) < kTwinCos || ca.sx * cb.sx + ca.sy * cb.sy <= 0) return false;
+  if (!parallel(ca, cb) || ca.sx * cb.sx + ca.sy * cb.sy <= 0) return false;
   const float len_a = std::hypot(a.x1 - a.x0, a.y1 - a.y0), len_b = std::hypot(b.x1 - b.x0, b.y1 - b.y0);
-  const auto along = [&](float x, float y) { return (x - a.x0) * ca.ux + (y - a.y0) * ca.uy; };
-  const auto off = [&](float x, float y) { return std::abs((x - a.x0) * ca.sx + (y - a.y0) * ca.sy); };
-  if (off(b.x0, b.y0) > kNearPx || off(b.x1, b.y1) > kNearPx) return false;
-  const float t0 = along(b.x0, b.y0), t1 = along(b.x1, b.y1);
-  return std::min(len_a, std::max(t0, t1)) - std::max(0.f, std::min(t0, t1)) > 0.5f * std::min(len_a, len_b);
+  const Ends e = ends_of(b, a, ca);
+  if (std::abs(e.n0) > kNearPx || std::abs(e.n1) > kNearPx) return false;
+  return std::min(len_a, std::max(e.t0, e.t1)) - std::max(0.f, std::min(e.t0, e.t1)) > 0.5f * std::min(len_a, len_b);
 }
 
 // Two marking segments that a move put on one painted edge (a ghost's two drawn steps) are one:
@@ -502,22 +509,21 @@ bool StripeCheck::run_with_thin_lines(const cv::Mat& bgr8, const FieldColours& f
   flags_.clear();
   thin_flags_.clear();
   if (!field || bgr8.type() != CV_8UC3) return false;
-  checked_.assign(segments.begin(), segments.end());
   // One set of profiles per segment, measured as ThinLines::Accepted; the candidates Level
   // would measure from them beside.
   work_.candidates.clear();
   level_.clear();
   const FieldPixel pixel(*field.median, FieldBoundaryParams{}, field.turf);
-  for (std::size_t i = 0; i < checked_.size(); ++i) {
+  for (std::size_t i = 0; i < segments.size(); ++i) {
     Candidate c, l;
     c.segment = i;
     bool level_stripe = false;
-    if (measure_candidate(bgr8, pixel, checked_[i], params, ThinLines::Accepted, work_, c, &l, &level_stripe))
+    if (measure_candidate(bgr8, pixel, segments[i], params, ThinLines::Accepted, work_, c, &l, &level_stripe))
       work_.candidates.push_back(c);
     if (level_stripe) level_.push_back(l);
   }
   const auto flags_of = [&](std::vector<Candidate>& cs, std::vector<std::uint8_t>& flags) {
-    checked_.assign(segments.begin(), segments.end());  // as measured: the first pass moves some
+    checked_.assign(segments.begin(), segments.end());  // afresh: each pass moves some
     for (Segment& s : checked_) s.label = Label::Marking;
     pair_stripes(checked_, cs, params, stripes_);
     for (const Segment& s : checked_) flags.push_back(s.label == Label::Marking);
