@@ -368,7 +368,8 @@ float twin_distance(const Segment& a, const Candidate& ca, const Segment& b, con
 // width shrinks with distance), and their mean measured width.
 Marking merge(const Segment& a, const Candidate& ca, const Segment& b, const Candidate& cb) {
   const float len = std::hypot(a.x1 - a.x0, a.y1 - a.y0);
-  const auto [t0, t1, n0, n1] = ends_of(b, a, ca);
+  const Ends e = ends_of(b, a, ca);
+  const float t0 = e.t0, t1 = e.t1, n0 = e.n0, n1 = e.n1;
   const float lo = std::min({0.f, t0, t1}), hi = std::max({len, t0, t1});
   // Half of b's distance from a's line at t along a; beyond b's ends, its distance there (b may
   // be short, and its few degrees carried along all of a would tilt the centre line).
