@@ -69,6 +69,41 @@ TEST(FieldBoundary, ARobotAtTheSideDoesNotPullTheEndDown) {
   EXPECT_NEAR(b.y_at(620), horizon(552), 6);
 }
 
+// Robots near the camera at the frame's right side stand on the turf from row 190 to 400: the
+// columns' scans end at their feet, and held level the boundary would lie 14 px above the
+// field's edge at the right. The turf above them, longer than the gap and no higher than the
+// rest of the edge, is the field's (MSL Bordeaux: a robot at a fisheye frame's side).
+TEST(FieldBoundary, TheTurfAboveARobotAtTheSideIsTheFields) {
+  cv::Mat img = field_frame();
+  cv::rectangle(img, {400, 190}, {639, 400}, cv::Scalar(15, 15, 15), cv::FILLED);
+  const fl::FieldBoundary b = expect_along_the_edge(img);
+  ASSERT_FALSE(b.empty());
+  fl::FieldBoundaryParams stop_at_the_robot;
+  stop_at_the_robot.past_occluder_run = 0;
+  fl::FieldBoundary held;
+  fl::find_field_boundary(img, held, stop_at_the_robot);
+  EXPECT_LT(held.y_at(620), horizon(620) - 8) << "without looking past the robot the boundary is held level";
+}
+
+// The robots hide the field's edge up to row 60 instead, and a green poster hangs in the hall
+// from row 10 to 50 above them: the first field past them lies far higher than the rest of the
+// boundary, so it is not the field's.
+TEST(FieldBoundary, AGreenPosterAboveARobotAtTheSideIsNotTheField) {
+  cv::Mat img = field_frame();
+  cv::rectangle(img, {400, 60}, {639, 400}, cv::Scalar(15, 15, 15), cv::FILLED);
+  cv::rectangle(img, {400, 10}, {639, 50}, cv::Scalar(50, 140, 40), cv::FILLED);
+  img = fl::test::noisy(img);
+  fl::FieldBoundary b;
+  fl::find_field_boundary(img, b);
+  ASSERT_FALSE(b.empty());
+  for (float x = 0; x < 400; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
+  EXPECT_GT(b.y_at(620), 90) << "the poster is no top";
+  fl::FieldBoundaryParams any_rise;
+  any_rise.past_occluder_rise = 10;
+  fl::find_field_boundary(img, b, any_rise);
+  EXPECT_LT(b.y_at(620), 60) << "without the rise's limit the poster is the field";
+}
+
 // A robot's sloping shoulder at the frame's left side (MSL Bordeaux, fisheye): it hides the
 // far edge down a slope of 0.9 rows per column, gentler than a wall's side but steeper than a
 // field's corner falls away. Its hull end is dropped and the boundary held level.

@@ -19,6 +19,41 @@ double cross(const Point& o, const Point& a, const Point& b) {
   return double(a.x - o.x) * (b.y - o.y) - double(a.y - o.y) * (b.x - o.x);
 }
 
+// `out.points` from `out.columns`: their tops median-filtered, the upper hull over them, its
+// steep ends dropped.
+void hull_of_columns(FieldBoundary& out, const FieldBoundaryParams& params) {
+  out.points.clear();
+  // Median of each column's top with its neighbours (a fixed window: no allocation). The
+  // filtered tops go into `points` first, then the hull is built in place over them.
+  const int half = std::clamp(params.median_columns, 1, 15) / 2;
+  const int n = static_cast<int>(out.columns.size());
+  for (int i = 0; i < n; ++i) {
+    std::array<float, 15> window{};
+    int k = 0;
+    for (int j = std::max(0, i - half); j <= std::min(n - 1, i + half); ++j) window[k++] = out.columns[j].y;
+    std::nth_element(window.begin(), window.begin() + k / 2, window.begin() + k);
+    out.points.push_back({out.columns[i].x, window[k / 2]});
+  }
+  // Upper hull (Andrew's monotone chain over x): drop a point that lies below the chord of its
+  // neighbours, so notches close and the outline stays convex from above.
+  std::size_t kept = 0;
+  for (int i = 0; i < n; ++i) {
+    const Point p = out.points[i];
+    while (kept >= 2 && cross(out.points[kept - 2], out.points[kept - 1], p) <= 0) --kept;
+    out.points[kept++] = p;
+  }
+  out.points.resize(kept);
+  // Steep ends fall to an occluder or unrecognised turf at the side, not to the field's edge.
+  const auto steep = [&](const Point& end, const Point& inner) {
+    return end.y > inner.y && end.y - inner.y > params.max_end_slope * std::abs(end.x - inner.x);
+  };
+  std::size_t first = 0, last = out.points.size();
+  while (last - first > 2 && steep(out.points[first], out.points[first + 1])) ++first;
+  while (last - first > 2 && steep(out.points[last - 1], out.points[last - 2])) --last;
+  if (first > 0) std::copy(out.points.begin() + static_cast<long>(first), out.points.begin() + static_cast<long>(last), out.points.begin());
+  out.points.resize(last - first);
+}
+
 // The column's top, settled: scanning down from `top`, each field sample weighs +1 and a band
 // without field -cost per sample, when it is at least `band` px long, or `paint_band` px with at
 // least a third of it paint: a light floor strip before the next field behind this one reads as
@@ -28,12 +63,12 @@ double cross(const Point& o, const Point& a, const Point& b) {
 // is least, the lowest on a tie (nothing moves when all that lies above pays for itself). Stops
 // once one more band inside the field (shorter than the gap) could no longer bring the weight
 // back below its least.
-int settle_top(const cv::Mat& bgr8, const FieldPixel& pixel, int x, int top, int row_step, int band, int paint_band,
-               float cost, int gap) {
+int settle_top(const cv::Mat& bgr8, const FieldPixel& pixel, int x, int top, int bottom, int row_step, int band,
+               int paint_band, float cost, int gap) {
   const float give_up = cost * float(gap / row_step);
   float weight = 0, least = 0;
   int settled = top, bare = 0, painted = 0;  // the current band's samples without field
-  for (int y = top; y < bgr8.rows; y += row_step) {
+  for (int y = top; y <= bottom; y += row_step) {
     const std::uint8_t* p = bgr8.ptr<std::uint8_t>(y) + 3 * x;
     if (pixel.field(p)) {
       const bool floor_strip = top >= row_step && 2 * painted >= bare && (bare + painted) * row_step >= paint_band;
@@ -134,17 +169,22 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   const int lone_band = share_of_gap(params.lone_band_fraction);
   const int jump = std::clamp(std::min(gap / row_step, (lone_band - 1) / row_step), 0, std::max(params.max_jump, 0));
   const int edge_line = static_cast<int>(std::lround(params.edge_line_fraction * bgr8.rows));
-  int scanned = 0;
-  for (int x = column_step / 2; x < bgr8.cols; x += column_step) {
-    ++scanned;
+  // One column's scan from row `from` up to row `ceiling`: the top of its field (-1: none), the
+  // row where a stretch without field longer than the gap ended it (-1: none did) and the row of
+  // the first field sample it met.
+  struct Scan {
+    int top = -1, stop = -1, first = -1;
+  };
+  const auto scan_column = [&](int x, int from, int ceiling) {
+    Scan s;
     int top = -1, since_green = 0, paint = 0;
     // Samples: the run of field ending at the sample below y (0: that sample is none), the run
     // of none, the run of none below the current run of field.
     int run = 0, bare = 0, bare_below = 0;
     // Whether the current run of field may be the top (FieldBoundaryParams::min_top_samples).
     const auto trusted = [&] { return top < 0 || run >= params.min_top_samples || bare_below * row_step < lone_band; };
-    for (int y = bgr8.rows - 1 - row_step / 2; y >= 0; y -= row_step) {
-      if (const int j = std::min(jump, y / row_step);
+    for (int y = from; y >= ceiling; y -= row_step) {
+      if (const int j = std::min(jump, (y - ceiling) / row_step);
           run > 0 && trusted() && j > 0 && pixel.field(bgr8.ptr<std::uint8_t>(y - j * row_step) + 3 * x)) {
         top = y -= j * row_step;
         since_green = paint = 0;
@@ -154,6 +194,7 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
       if (pixel.field(p)) {
         if (run++ == 0) bare_below = bare;
         bare = 0;
+        if (s.first < 0) s.first = y;
         if (trusted()) top = y;  // a lone sample carries the scan on, but is no top
         since_green = paint = 0;
         continue;
@@ -163,44 +204,56 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
         // A painted line, however wide near the camera, is part of the field: it neither
         // ends the field nor raises its top (unless it lies along the turf's edge: edge_line_top).
       } else if (top >= 0 && (since_green += row_step) > gap) {
+        s.stop = y;
         break;  // the field ended above `top`; below the first field pixel (the robot's own
                 // body, a lens's dark corner) nothing ends it
       }
     }
-    if (top < 0) continue;
-    const int settled = settle_top(bgr8, pixel, x, top, row_step, band, paint_band, params.band_cost, gap);
-    out.columns.push_back({float(x), float(settled == top ? edge_line_top(bgr8, pixel, x, top, row_step, edge_line) : settled)});
+    if (top >= 0) {
+      const int settled = settle_top(bgr8, pixel, x, top, from, row_step, band, paint_band, params.band_cost, gap);
+      s.top = settled == top ? edge_line_top(bgr8, pixel, x, top, row_step, edge_line) : settled;
+    }
+    return s;
+  };
+  const int bottom = bgr8.rows - 1 - row_step / 2;
+  int scanned = 0;
+  for (int x = column_step / 2; x < bgr8.cols; x += column_step) {
+    ++scanned;
+    const Scan s = scan_column(x, bottom, 0);
+    if (s.top < 0) continue;
+    out.columns.push_back({float(x), float(s.top)});
+    out.scan_ends.push_back(s.stop);
   }
   if (out.columns.size() < std::max<std::size_t>(2, static_cast<std::size_t>(params.min_columns * scanned))) return;
-  // Median of each column's top with its neighbours (a fixed window: no allocation). The
-  // filtered tops go into `points` first, then the hull is built in place over them.
-  const int half = std::clamp(params.median_columns, 1, 15) / 2;
-  const int n = static_cast<int>(out.columns.size());
-  for (int i = 0; i < n; ++i) {
-    std::array<float, 15> window{};
-    int k = 0;
-    for (int j = std::max(0, i - half); j <= std::min(n - 1, i + half); ++j) window[k++] = out.columns[j].y;
-    std::nth_element(window.begin(), window.begin() + k / 2, window.begin() + k);
-    out.points.push_back({out.columns[i].x, window[k / 2]});
+  hull_of_columns(out, params);
+  if (!(params.past_occluder_run > 0)) return;
+  // Turf past an occluder: a column whose scan ended at a robot standing on the field, with the
+  // field's turf above it, takes the top of that turf when it is at least `past_occluder_run`
+  // of the gap long (a robot's greenish panel is shorter) and lies no higher than the boundary's
+  // highest point by more than `past_occluder_rise` of the gap. The next field beyond a floor
+  // strip, a green poster over a wall, lie higher than that (their gap alone is longer).
+  const double past_run = params.past_occluder_run * gap;
+  float highest = out.points.front().y;
+  for (const Point& q : out.points) highest = std::min(highest, q.y);
+  const int limit = static_cast<int>(std::floor(highest - params.past_occluder_rise * gap));
+  // Scanned a gap higher still: turf that goes on above `limit` has no top below it.
+  const int ceiling = std::max(0, limit - gap);
+  bool raised = false;
+  for (std::size_t i = 0; i < out.columns.size(); ++i) {
+    const int x = static_cast<int>(out.columns[i].x);
+    for (int from = out.scan_ends[i]; from > ceiling;) {
+      const Scan past = scan_column(x, from, ceiling);
+      if (past.top < limit) break;  // none, or too high
+      if (past.first - past.top >= past_run) {
+        out.columns[i].y = float(past.top);
+        raised = true;
+        break;
+      }
+      from = past.stop;  // a few greenish samples on the occluder itself: look on above
+    }
   }
-  // Upper hull (Andrew's monotone chain over x): drop a point that lies below the chord of its
-  // neighbours, so notches close and the outline stays convex from above.
-  std::size_t kept = 0;
-  for (int i = 0; i < n; ++i) {
-    const Point p = out.points[i];
-    while (kept >= 2 && cross(out.points[kept - 2], out.points[kept - 1], p) <= 0) --kept;
-    out.points[kept++] = p;
-  }
-  out.points.resize(kept);
-  // Steep ends fall to an occluder or unrecognised turf at the side, not to the field's edge.
-  const auto steep = [&](const Point& end, const Point& inner) {
-    return end.y > inner.y && end.y - inner.y > params.max_end_slope * std::abs(end.x - inner.x);
-  };
-  std::size_t first = 0, last = out.points.size();
-  while (last - first > 2 && steep(out.points[first], out.points[first + 1])) ++first;
-  while (last - first > 2 && steep(out.points[last - 1], out.points[last - 2])) --last;
-  if (first > 0) std::copy(out.points.begin() + static_cast<long>(first), out.points.begin() + static_cast<long>(last), out.points.begin());
-  out.points.resize(last - first);
+  if (raised) hull_of_columns(out, params);
 }
+
 
 }  // namespace fieldlines
