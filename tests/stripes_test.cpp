@@ -151,6 +151,19 @@ TEST(Stripes, AWideLineWithALensColourFringeIsAStripe) {
   for (const Marking& m : r.markings) expect_centre_line(m, {0, 336}, {639, 366}, 26);
 }
 
+// The same line in a fisheye's vignetted corner (MSL Bangkok): the turf past it darkened to 0.6
+// of the field colour and the fringe between with it, to 0.55: darker than 0.7 of the field
+// colour, but not of the turf beside it. Both edges are the line's.
+TEST(Stripes, AWideLineInAVignettedCornerIsAStripe) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  band(clean, 323, 26, kPaint);
+  band(clean, 349, 3, cv::Scalar(90, 30, 7));                       // B + G + R 127 of the turf's 230
+  band(clean, 352, 200, cv::Scalar(30, 84, 24));                    // the turf at 0.6, the same tint
+  const Detected r = detect(noisy(clean));
+  ASSERT_GE(r.markings.size(), 1u);
+  for (const Marking& m : r.markings) expect_centre_line(m, {0, 336}, {639, 366}, 26);
+}
+
 // The same white bar with a robot's dark body (a ninth of the turf's brightness) on one side is
 // no stripe, although its other edge's colours are a marking's.
 TEST(Stripes, AWhiteBarBesideADarkBodyIsNoMarking) {
