@@ -104,6 +104,20 @@ TEST(FieldBoundary, AGreenPosterAboveARobotAtTheSideIsNotTheField) {
   EXPECT_LT(b.y_at(620), 60) << "without the rise's limit the poster is the field";
 }
 
+// The field's edge 5 px under the frame's top (the camera tilted down), and a robot at the side
+// reaching from row 400 past the top: its columns find no turf above it, and half a gap above the
+// highest point lies above the frame. The look past it ends there (it once went round forever).
+TEST(FieldBoundary, ARobotReachingTheFramesTopEndsTheLookPastIt) {
+  cv::Mat img(480, 640, CV_8UC3, cv::Scalar(50, 140, 40));
+  cv::rectangle(img, {0, 0}, {639, 4}, cv::Scalar(120, 120, 120), cv::FILLED);
+  cv::rectangle(img, {400, 0}, {639, 400}, cv::Scalar(15, 15, 15), cv::FILLED);
+  img = fl::test::noisy(img);
+  fl::FieldBoundary b;
+  fl::find_field_boundary(img, b);
+  ASSERT_FALSE(b.empty());
+  for (float x = 0; x < 400; x += 16) EXPECT_NEAR(b.y_at(x), 5, 4) << "x " << x;
+}
+
 // A robot's sloping shoulder at the frame's left side (MSL Bordeaux, fisheye): it hides the
 // far edge down a slope of 0.9 rows per column, gentler than a wall's side but steeper than a
 // field's corner falls away. Its hull end is dropped and the boundary held level.

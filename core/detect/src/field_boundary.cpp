@@ -241,9 +241,10 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   bool raised = false;
   for (std::size_t i = 0; i < out.columns.size(); ++i) {
     const int x = static_cast<int>(out.columns[i].x);
-    for (int from = out.scan_ends[i]; from > ceiling;) {
+    // A top no higher than `limit` lies at or above `from`, so `from` must lie below `limit`.
+    for (int from = out.scan_ends[i]; from > limit;) {
       const Scan past = scan_column(x, from, ceiling);
-      if (past.top < limit) break;  // none, or too high
+      if (past.top < 0 || past.top < limit) break;  // none, or too high
       if (past.first - past.top >= past_run) {
         out.columns[i].y = float(past.top);
         raised = true;
