@@ -106,7 +106,7 @@ TEST(FieldBoundary, AGreenPosterAboveARobotAtTheSideIsNotTheField) {
 
 // The field's edge 5 px under the frame's top (the camera tilted down), and a robot at the side
 // reaching from row 400 past the top: its columns find no turf above it, and half a gap above the
-// highest point lies above the frame. The look past it ends there (it once went round forever).
+// highest point lies above the frame. The look past it must still end.
 TEST(FieldBoundary, ARobotReachingTheFramesTopEndsTheLookPastIt) {
   cv::Mat img(480, 640, CV_8UC3, cv::Scalar(50, 140, 40));
   cv::rectangle(img, {0, 0}, {639, 4}, cv::Scalar(120, 120, 120), cv::FILLED);
