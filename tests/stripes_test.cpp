@@ -283,6 +283,28 @@ TEST(Stripes, AnEdgeDrawnOnABlurRampIsMovedOntoThePaintsEdge) {
   EXPECT_FLOAT_EQ(chord[0].y1, y_end);
 }
 
+// A segment drawn inside a motion-blurred line's paint (a ghost step), 9 px below its top edge
+// where the edge steps down 3 px half-way along: the profiles put the edge 6-9 px off it and
+// disagree by more than a move allows, so it is no edge of that paint. The same segment on the
+// edge is one.
+TEST(Stripes, ASegmentInsideThePaintFarFromItsEdgeIsNoMarking) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  clean(cv::Rect(0, 200, 360, 20)).setTo(kPaint);
+  clean(cv::Rect(360, 203, 280, 17)).setTo(kPaint);
+  const cv::Mat frame = noisy(clean);
+  const std::optional<Rgb> field = estimate_field_colour(frame);
+  ASSERT_TRUE(field);
+  const float down = 50;  // the colour gradient towards the paint's body
+  std::vector<Segment> edges{
+      {.x0 = 100, .y0 = 208.5f, .x1 = 540, .y1 = 208.5f, .grad_y = {down, down, down}, .label = Label::Marking},
+      {.x0 = 40, .y0 = 199.5f, .x1 = 320, .y1 = 199.5f, .grad_y = {down, down, down}, .label = Label::Marking}};
+  StripeWorkspace work;
+  std::vector<Marking> out;
+  find_stripes(frame, field, edges, stripes_on(), work, out);
+  EXPECT_EQ(edges[0].label, Label::None);
+  EXPECT_EQ(edges[1].label, Label::Marking);
+}
+
 // A line seen in perspective widens towards the camera, so its centre drifts away from either
 // edge: the centre line follows the paint at both ends, from one edge or from both. (A constant
 // offset from the edge, its median, misses the far end by about a quarter of the near width.)
