@@ -236,15 +236,15 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   float highest = out.points.front().y;
   for (const Point& q : out.points) highest = std::min(highest, q.y);
   const int limit = static_cast<int>(std::floor(highest - params.past_occluder_rise * gap));
-  // Scanned a gap higher still: turf that goes on above `limit` has no top below it.
+  // The scans go a gap above `limit`: turf still going on there has no top below `limit`.
   const int ceiling = std::max(0, limit - gap);
   bool raised = false;
   for (std::size_t i = 0; i < out.columns.size(); ++i) {
     const int x = static_cast<int>(out.columns[i].x);
-    // A top no higher than `limit` lies at or above `from`, so `from` must lie below `limit`.
+    // Each scan's top lies above its start (rows count down) and must not lie above `limit`.
     for (int from = out.scan_ends[i]; from > limit;) {
       const Scan past = scan_column(x, from, ceiling);
-      if (past.top < 0 || past.top < limit) break;  // none, or too high
+      if (past.top < std::max(limit, 0)) break;  // no field, or it reaches above `limit`
       if (past.first - past.top >= past_run) {
         out.columns[i].y = float(past.top);
         raised = true;
@@ -255,6 +255,5 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   }
   if (raised) hull_of_columns(out, params);
 }
-
 
 }  // namespace fieldlines

@@ -15,18 +15,18 @@
 // the turf's edge, with the field's dark surround right beyond it, raises the top to its own
 // (`edge_line_fraction`). A column whose scan a robot or a person standing on the field ended looks
 // on above it: turf there, no higher than the rest of the boundary, is the field's
-// (`past_occluder_run`, `past_occluder_rise`). Column tops are median-filtered across 7 neighbouring columns (a column
-// running up a green poster, pole or shirt is an outlier, and so are up to 3 side by side), then
-// replaced by their upper convex hull: a robot or player standing on the field hides the green
-// behind it and pulls its columns down, but the boundary of a flat field seen from inside it is
-// convex in the image, so the hull bridges such notches (B-Human's field boundary does the same). A
-// notch at the frame's side has no column beyond it to bridge to: a robot standing at the side, a
-// fisheye's dark corner or turf in a light the field colour misses pulls the hull's end down
-// towards the bottom corner, and everything on that side would lie above the field. So the hull's
-// end pieces that fall towards the frame's side more steeply than `max_end_slope` are dropped, and
-// the boundary is held level from the last piece kept (FieldBoundary::y_at). A frame without green
-// gives an empty boundary. Buffers are the caller's and keep their capacity: no allocation once
-// warm.
+// (`past_occluder_run`, `past_occluder_rise`). Column tops are median-filtered across 7
+// neighbouring columns (a column running up a green poster, pole or shirt is an outlier, and so are
+// up to 3 side by side), then replaced by their upper convex hull: a robot or player standing on
+// the field hides the green behind it and pulls its columns down, but the boundary of a flat field
+// seen from inside it is convex in the image, so the hull bridges such notches (B-Human's field
+// boundary does the same). A notch at the frame's side has no column beyond it to bridge to: a
+// robot standing at the side, a fisheye's dark corner or turf in a light the field colour misses
+// pulls the hull's end down towards the bottom corner, and everything on that side would lie above
+// the field. So the hull's end pieces that fall towards the frame's side more steeply than
+// `max_end_slope` are dropped, and the boundary is held level from the last piece kept
+// (FieldBoundary::y_at). A frame without green gives an empty boundary. Buffers are the caller's
+// and keep their capacity: no allocation once warm.
 #include <vector>
 
 #include <opencv2/core/mat.hpp>
