@@ -33,14 +33,20 @@ void above_the_edge(cv::Mat& img, int x, int from, int to, const cv::Scalar& col
   cv::line(img, {x, edge - to}, {x, edge - from - 1}, colour);
 }
 
-// The boundary of `img` (noise added) under `params`, checked to run along the carpet's edge.
-fl::FieldBoundary expect_along_the_edge(cv::Mat& img, const fl::FieldBoundaryParams& params = {}) {
+// The boundary of `img` (noise added) under `params`, checked to run along `edge` left of `right`.
+fl::FieldBoundary expect_along(cv::Mat& img, float (*edge)(float), float right,
+                               const fl::FieldBoundaryParams& params = {}) {
   img = fl::test::noisy(img);
   fl::FieldBoundary b;
   fl::find_field_boundary(img, b, params);
   EXPECT_FALSE(b.empty());
-  for (float x = 0; x < 640; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
+  for (float x = 0; x < right; x += 16) EXPECT_NEAR(b.y_at(x), edge(x), 4) << "x " << x;
   return b;
+}
+
+// ...along the carpet's edge, all the way.
+fl::FieldBoundary expect_along_the_edge(cv::Mat& img, const fl::FieldBoundaryParams& params = {}) {
+  return expect_along(img, horizon, 640, params);
 }
 
 TEST(FieldBoundary, FollowsTheTopOfTheGreenPastRobotsAndWideLines) {
@@ -92,11 +98,8 @@ TEST(FieldBoundary, AGreenPosterAboveARobotAtTheSideIsNotTheField) {
   cv::Mat img = field_frame();
   cv::rectangle(img, {400, 60}, {639, 400}, cv::Scalar(15, 15, 15), cv::FILLED);
   cv::rectangle(img, {400, 10}, {639, 50}, cv::Scalar(50, 140, 40), cv::FILLED);
-  img = fl::test::noisy(img);
-  fl::FieldBoundary b;
-  fl::find_field_boundary(img, b);
+  fl::FieldBoundary b = expect_along(img, horizon, 400);
   ASSERT_FALSE(b.empty());
-  for (float x = 0; x < 400; x += 16) EXPECT_NEAR(b.y_at(x), horizon(x), 4) << "x " << x;
   EXPECT_GT(b.y_at(620), 90) << "the poster is no top";
   fl::FieldBoundaryParams any_rise;
   any_rise.past_occluder_rise = 10;
@@ -111,11 +114,7 @@ TEST(FieldBoundary, ARobotReachingTheFramesTopEndsTheLookPastIt) {
   cv::Mat img(480, 640, CV_8UC3, cv::Scalar(50, 140, 40));
   cv::rectangle(img, {0, 0}, {639, 4}, cv::Scalar(120, 120, 120), cv::FILLED);
   cv::rectangle(img, {400, 0}, {639, 400}, cv::Scalar(15, 15, 15), cv::FILLED);
-  img = fl::test::noisy(img);
-  fl::FieldBoundary b;
-  fl::find_field_boundary(img, b);
-  ASSERT_FALSE(b.empty());
-  for (float x = 0; x < 400; x += 16) EXPECT_NEAR(b.y_at(x), 5, 4) << "x " << x;
+  expect_along(img, [](float) { return 5.f; }, 400);
 }
 
 // A robot's sloping shoulder at the frame's left side (MSL Bordeaux, fisheye): it hides the
