@@ -270,11 +270,23 @@ bool straight(const Candidate& c) {
   return std::abs(c.bow) <= std::max(kMaxBowPx, kMaxBowWidths * c.width);
 }
 
+// Whether the segment may move onto its paint's measured edge: off it beyond a sharp edge's
+// ridge, the profiles agreeing on a line, the move within the fade the check allows.
+bool movable(const Candidate& c) {
+  const float limit = kMaxBlurPx;
+  return std::abs(c.edge_median) >= kMinEdgeShiftPx && c.edge_spread <= kMaxEdgeSpreadPx &&
+         std::abs(c.edge0) <= limit && std::abs(c.edge1) <= limit;
+}
+
+// Whether a candidate lies too far off its paint's edge to be that edge (kMaxOffEdgePx).
+bool off_its_edge(const Candidate& c) { return std::abs(c.edge_median) > kMaxOffEdgePx && !movable(c); }
+
 // Whether ThinLines::Level takes thin paint on a segment `len` px long, `uy` its unit direction's
 // y: long and nearly level.
 bool level(float len, float uy) { return len >= kLevelMinLengthPx && std::abs(uy) <= kLevelMaxSin; }
 
-// The candidate's paint side, profiles and medians under `thin`; false when it is no stripe.
+// The candidate's paint side, profiles and medians under `thin`; false when it is no stripe
+// (off_its_edge included).
 // `as_level`, when given (with ThinLines::Accepted), gets the candidate as ThinLines::Level
 // would measure it from the same profiles (those taken only as thin paint left out unless the
 // segment is level), and `*level_stripe` whether it is a stripe then.
@@ -336,7 +348,7 @@ bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segmen
     for (std::size_t i = 0; i < count; ++i)
       out.edge_spread = std::max(out.edge_spread, std::abs(edges[i] - (out.edge0 + at[m][i] * (out.edge1 - out.edge0))));
     out.edge_median = median(edges, n);
-    return true;
+    return !off_its_edge(out);
   };
   if (as_level) {
     *as_level = c;
@@ -393,17 +405,6 @@ Marking merge(const Segment& a, const Candidate& ca, const Segment& b, const Can
   const cv::Point2f p = centre(lo), q = centre(hi);
   return {p.x, p.y, q.x, q.y, 0.5f * (ca.width + cb.width)};
 }
-
-// Whether the segment may move onto its paint's measured edge: off it beyond a sharp edge's
-// ridge, the profiles agreeing on a line, the move within the fade the check allows.
-bool movable(const Candidate& c) {
-  const float limit = kMaxBlurPx;
-  return std::abs(c.edge_median) >= kMinEdgeShiftPx && c.edge_spread <= kMaxEdgeSpreadPx &&
-         std::abs(c.edge0) <= limit && std::abs(c.edge1) <= limit;
-}
-
-// Whether a candidate lies too far off its paint's edge to be that edge (kMaxOffEdgePx).
-bool off_its_edge(const Candidate& c) { return std::abs(c.edge_median) > kMaxOffEdgePx && !movable(c); }
 
 // The segment moved onto its paint's measured edge when it lies on a blur ramp (stripes.hpp).
 void snap_to_edge(Segment& s, Candidate& c) {
@@ -502,8 +503,7 @@ void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segm
       if (segments[i].label != Label::Marking) continue;
       Candidate c;
       c.segment = i;
-      if (!measure_candidate(bgr8, pixel, segments[i], params, thin, work, c) || off_its_edge(c) ||
-          (shape == Shape::Straight && !straight(c)))
+      if (!measure_candidate(bgr8, pixel, segments[i], params, thin, work, c) || (shape == Shape::Straight && !straight(c)))
         continue;
       if (on_field) {
         const Marking centre = centre_of(segments[i], c);
@@ -540,10 +540,9 @@ bool StripeCheck::run_with_thin_lines(const cv::Mat& bgr8, const FieldColours& f
     Candidate c, l;
     c.segment = i;
     bool level_stripe = false;
-    if (measure_candidate(bgr8, pixel, segments[i], params, ThinLines::Accepted, work_, c, &l, &level_stripe) &&
-        !off_its_edge(c))
+    if (measure_candidate(bgr8, pixel, segments[i], params, ThinLines::Accepted, work_, c, &l, &level_stripe))
       work_.candidates.push_back(c);
-    if (level_stripe && !off_its_edge(l)) level_.push_back(l);
+    if (level_stripe) level_.push_back(l);
   }
   const auto flags_of = [&](std::vector<Candidate>& cs, std::vector<std::uint8_t>& flags) {
     checked_.assign(segments.begin(), segments.end());  // afresh: each pass moves some
