@@ -96,9 +96,12 @@ TEST_F(Calibrate, ImageFoldersAreDetectedThenFittedWithAReport) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("marking"), std::string::npos) << r.out;
   // The detector the frames chose, and why the coarse pass is off on a plain synthetic field.
-  EXPECT_NE(r.out.find("detector: scan interval 2, min length 25, stripes on; one scale (a coarse pass would add"),
-            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("detector: scan interval 2, min length 25, stripes up to "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("; one scale (a coarse pass would add"), std::string::npos) << r.out;
   const fl::ThresholdsFile file = fl::load_thresholds_file(out);
+  // The widest stripe from the frames' own lines (stripe_width.hpp), recorded where it came from.
+  EXPECT_LT(file.detector.stripe_max_width, fl::DetectorParams{}.stripe_max_width);
+  EXPECT_EQ(file.provenance["detector"]["stripe_max_width"].get<double>(), file.detector.stripe_max_width);
   EXPECT_EQ(file.provenance["counts"]["images"], 16);
   EXPECT_EQ(file.detector.coarse_scale, 1);
   EXPECT_LT(file.provenance["detector"]["coarse_gain"].get<double>(), 0.2);

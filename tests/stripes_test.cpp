@@ -531,6 +531,30 @@ TEST(Stripes, TheCentreCirclesChordsAreNoStraightStripes) {
   EXPECT_GE(straight_lines, 0.8 * lines) << straight_lines << " of " << lines << " lines pass as straight";
 }
 
+// The check measures each stripe's width as a share of its row's width scale (width_share): the
+// row itself below a quarter of the height, a quarter of the height above it. Plain turf is no
+// stripe and measures 0.
+TEST(Stripes, TheCheckMeasuresEachStripesWidthAsAShareOfItsRow) {
+  EXPECT_FLOAT_EQ(width_share(8, 400, 480), 0.02f);
+  EXPECT_FLOAT_EQ(width_share(6, 60, 480), 0.05f);
+  EXPECT_EQ(width_share(6, 60, 0), 0.f);
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  cv::rectangle(clean, cv::Point(0, 396), cv::Point(639, 404), kPaint, cv::FILLED);  // 9 px at row 400
+  cv::rectangle(clean, cv::Point(0, 98), cv::Point(639, 102), kPaint, cv::FILLED);   // 5 px at row 100
+  const cv::Mat frame = noisy(clean);
+  const auto edge = [](float y, float g) {
+    return Segment{.x0 = 60, .y0 = y, .x1 = 580, .y1 = y, .grad_y = {g, g, g}};
+  };
+  const std::vector<Segment> segments{edge(395.5f, 50), edge(404.5f, -50), edge(97.5f, 50), edge(250, 50)};
+  StripeCheck check;
+  ASSERT_TRUE(check.run(frame, estimate_field_colour(frame), segments, stripes_on()));
+  ASSERT_EQ(check.width_shares().size(), segments.size());
+  EXPECT_NEAR(check.width_shares()[0], 9.f / 400, 1.f / 400);
+  EXPECT_NEAR(check.width_shares()[1], 9.f / 400, 1.f / 400);
+  EXPECT_NEAR(check.width_shares()[2], 5.f / 120, 1.f / 120);
+  EXPECT_EQ(check.width_shares()[3], 0.f) << "plain turf";
+}
+
 TEST(Stripes, OtherLabelsAreLeftAlone) {
   const cv::Mat frame = noisy(cv::Mat(120, 160, CV_8UC3, kTurf));
   StripeWorkspace work;

@@ -23,6 +23,7 @@
 #include "fieldlines/train/calibrate.hpp"
 #include "fieldlines/train/calibration_inputs.hpp"
 #include "fieldlines/train/detector_calibration.hpp"
+#include "fieldlines/train/stripe_width.hpp"
 
 namespace fieldlines::cli {
 namespace {
@@ -232,8 +233,8 @@ int cmd_calibrate(const Args& args) {
   VenueInputs venue = gather_for_venue(a.positionals(), config.detector, config.thresholds, every, quiet,
                                        a.flag("--keep-detector"));
   Inputs& in = venue.in;
-  const DetectorParams& detector = venue.detector;
-  const nlohmann::json& detector_report = venue.provenance;
+  DetectorParams& detector = venue.detector;
+  nlohmann::json& detector_report = venue.provenance;
   const Thresholds start = in.data.image_settings(config.thresholds, !a.flag("--no-light-adaptation"));
   const auto t1 = std::chrono::steady_clock::now();
   Calibration fit = calibrate(in.data.segments(), start, {}, in.data.boundary_candidates(),
@@ -262,6 +263,8 @@ int cmd_calibrate(const Args& args) {
   }
   // Throws (exit 2, no thresholds file) when the markings were refused.
   const Thresholds thresholds = calibrated_thresholds(fit, start);
+  calibrate_stripe_width(detector, detector_report, in.data, thresholds);
+  p["detector"] = detector_report;
 
   ThresholdsFile file;
   file.detector = detector;
@@ -283,8 +286,9 @@ int cmd_calibrate(const Args& args) {
     if (detector_report.value("calibrated", false)) {
       // What the frames chose for the detector: the coarse pass says why it is on or off.
       const double gain = 100 * detector_report.value("coarse_gain", 0.0);
-      std::printf("detector: scan interval %d, min length %d, stripes %s; ", detector.scan_interval,
-                  detector.min_line_length, detector.stripes ? "on" : "off");
+      std::printf("detector: scan interval %d, min length %d, stripes ", detector.scan_interval, detector.min_line_length);
+      if (detector.stripes) std::printf("up to %.3f of the height at the bottom; ", detector.stripe_max_width);
+      else std::printf("off; ");
       if (detector.coarse_scale > 1)
         std::printf("coarse pass 1/%d from %.0f %% of the height (it adds %.0f %% to the stripes)\n", detector.coarse_scale,
                     100 * detector.coarse_from, gain);

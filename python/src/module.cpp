@@ -33,6 +33,7 @@
 #include "fieldlines/train/calibrate.hpp"
 #include "fieldlines/train/calibration_inputs.hpp"
 #include "fieldlines/train/detector_calibration.hpp"
+#include "fieldlines/train/stripe_width.hpp"
 #include "json_dict.hpp"
 
 namespace py = pybind11;
@@ -272,6 +273,7 @@ py::dict calibrate_images(const py::object& images, const py::object& thresholds
   } catch (const Error& e) {
     throw py::value_error(std::string("calibration refused: ") + e.what());
   }
+  calibrate_stripe_width(chosen, detector_report, inputs, calibrated);
   ThresholdsFile file;
   file.detector = chosen;
   file.thresholds = calibrated;

@@ -31,15 +31,18 @@ void CalibrationInputs::add_marking_candidates(const cv::Mat& image, const Field
   // off, or a frame without a field or in another pixel format, where the check keeps nothing.
   if (!stripe_params_.stripes || !stripe_check_.run(image, field, found_, stripe_params_)) {
     marking_candidate_.insert(marking_candidate_.end(), found_.size(), 1);
+    width_share_.insert(width_share_.end(), found_.size(), 0.f);
     return;
   }
   marking_candidate_.insert(marking_candidate_.end(), stripe_check_.flags().begin(), stripe_check_.flags().end());
+  width_share_.insert(width_share_.end(), stripe_check_.width_shares().begin(), stripe_check_.width_shares().end());
 }
 
 void CalibrationInputs::add_segments(std::span<const Segment> segments) {
   segments_.insert(segments_.end(), segments.begin(), segments.end());
   boundary_candidate_.insert(boundary_candidate_.end(), segments.size(), 1);
   marking_candidate_.insert(marking_candidate_.end(), segments.size(), 1);
+  width_share_.insert(width_share_.end(), segments.size(), 0.f);
 }
 
 Thresholds CalibrationInputs::image_settings(Thresholds start, bool light) {

@@ -278,6 +278,10 @@ bool movable(const Candidate& c) {
          std::abs(c.edge0) <= limit && std::abs(c.edge1) <= limit;
 }
 
+// The height the largest plausible width scales with at row `y` (stripes.hpp): the frame's own
+// at the bottom, kTopWidthShare of it on the top rows.
+float width_scale(float y, int rows) { return float(rows) * std::max(kTopWidthShare, y / float(rows)); }
+
 // Whether a candidate lies too far off its paint's edge to be that edge (kMaxOffEdgePx).
 bool off_its_edge(const Candidate& c) { return std::abs(c.edge_median) > kMaxOffEdgePx && !movable(c); }
 
@@ -313,7 +317,6 @@ bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segmen
   if (along < 0) nx = -nx, ny = -ny;
   c.sx = nx, c.sy = ny;
   const int samples = std::clamp(params.stripe_samples, 1, 32);
-  const float bottom_width = static_cast<float>(params.stripe_max_width) * float(bgr.rows);
   // Index 0: the profiles `thin` takes; 1: those ThinLines::Level takes.
   std::array<std::array<float, 32>, 2> widths{}, offsets{}, at{};
   std::array<int, 2> stripes{};
@@ -321,7 +324,7 @@ bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segmen
   for (int k = 0; k < samples; ++k) {
     const float f = (float(k) + 0.5f) / float(samples);
     const float px = s.x0 + f * dx, py = s.y0 + f * dy;
-    const float max_width = bottom_width * std::max(kTopWidthShare, py / float(bgr.rows));
+    const float max_width = static_cast<float>(params.stripe_max_width) * width_scale(py, bgr.rows);
     const Profile p =
         measure_profile(bgr, pixel, px, py, nx, ny, max_width, thin == ThinLines::Accepted || thin_when_level, work);
     decided += p.verdict != Verdict::Cut;  // a thin profile that Level would not take is a No: decided
@@ -515,14 +518,23 @@ void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segm
   pair_stripes(segments, work.candidates, params, out);
 }
 
+float width_share(float width, float y, int rows) { return rows > 0 ? width / width_scale(y, rows) : 0.f; }
+
 bool StripeCheck::run(const cv::Mat& bgr8, const FieldColours& field, std::span<const Segment> segments,
                       const DetectorParams& params, ThinLines thin) {
   flags_.clear();
+  width_shares_.clear();
   if (!field || bgr8.type() != CV_8UC3) return false;
   checked_.assign(segments.begin(), segments.end());
   for (Segment& s : checked_) s.label = Label::Marking;
   find_stripes(bgr8, field, checked_, params, work_, stripes_, thin);
   for (const Segment& s : checked_) flags_.push_back(s.label == Label::Marking);
+  width_shares_.assign(segments.size(), 0.f);
+  for (const Candidate& c : work_.candidates) {
+    if (!flags_[c.segment]) continue;
+    const Marking centre = centre_of(segments[c.segment], c);  // the segment as given: a move shifts the offsets
+    width_shares_[c.segment] = width_share(c.width, 0.5f * (centre.y0 + centre.y1), bgr8.rows);
+  }
   return true;
 }
 
@@ -530,6 +542,7 @@ bool StripeCheck::run_with_thin_lines(const cv::Mat& bgr8, const FieldColours& f
                                       std::span<const Segment> segments, const DetectorParams& params) {
   flags_.clear();
   thin_flags_.clear();
+  width_shares_.clear();  // run()'s alone
   if (!field || bgr8.type() != CV_8UC3) return false;
   // One set of profiles per segment, measured as ThinLines::Accepted; the candidates Level
   // would measure from them beside.

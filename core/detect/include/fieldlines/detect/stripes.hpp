@@ -16,7 +16,8 @@
 //    body at the frame's bottom): dark, and mostly dark with no field from there to the frame's
 //    bottom or side border within a tenth of the height. The largest plausible width grows
 //    linearly towards the image bottom, where the field is nearest: `stripe_max_width` times the
-//    image height on the bottom row, a quarter of that on the top rows;
+//    image height on the bottom row, a quarter of that on the top rows (calibration sets it from
+//    the venue's own stripes: fieldlines/train/stripe_width.hpp);
 //  - between paint and turf on either side only a fade (at most 10 px, for motion blur, or a
 //    lens's colour fringe; none darker than 0.7 of the field colour): a robot's dark body beside
 //    its white bar is no turf.
@@ -102,6 +103,11 @@ struct StripeWorkspace {
 // (gui/model/proposal_gate.hpp).
 enum class ThinLines : std::uint8_t { Level, Accepted };
 
+// The `stripe_max_width` under which paint `width` px wide, centred on row `y` of a frame `rows`
+// high, is just plausible: the largest plausible width's rule (above) inverted. Calibration
+// measures a venue's stripes with it (fieldlines/train/stripe_width.hpp).
+float width_share(float width, float y, int rows);
+
 // Which stripes a caller takes: any, or straight ones only (see above).
 enum class Shape : std::uint8_t { Any, Straight };
 
@@ -126,6 +132,9 @@ class StripeCheck {
   bool run(const cv::Mat& bgr8, const FieldColours& field, std::span<const Segment> segments,
            const DetectorParams& params, ThinLines thin = ThinLines::Level);
   const std::vector<std::uint8_t>& flags() const { return flags_; }
+  // After run(): per segment, its paint's median width as width_share() at the paint's centre; 0
+  // where it is no stripe.
+  const std::vector<float>& width_shares() const { return width_shares_; }
 
   // run() with ThinLines::Level into flags() and with ThinLines::Accepted into thin_flags(),
   // from one set of profiles per segment (the two differ only in the profiles whose peak is
@@ -141,6 +150,7 @@ class StripeCheck {
   std::vector<StripeWorkspace::Candidate> level_;  // run_with_thin_lines()'s ThinLines::Level candidates
   std::vector<Marking> stripes_;
   std::vector<std::uint8_t> flags_, thin_flags_;
+  std::vector<float> width_shares_;
 };
 
 }  // namespace fieldlines

@@ -46,6 +46,9 @@ class CalibrationInputs {
   // Per segment: may it be a marking (a stripe, or not checked: no stripe check, no image, no
   // field in its frame)? calibrate() fits the marking class on these alone.
   const std::vector<std::uint8_t>& marking_candidates() const { return marking_candidate_; }
+  // Per segment: its paint's width as a share of the stripes' width scale (width_share in
+  // stripes.hpp) where the stripe check found a stripe, 0 elsewhere. stripe_width.hpp reads it.
+  const std::vector<float>& width_shares() const { return width_share_; }
   std::size_t frames() const { return frames_; }                         // every add_image
   std::size_t frames_with_field() const { return fields_.size(); }
 
@@ -58,6 +61,7 @@ class CalibrationInputs {
 
   std::vector<Segment> segments_, found_;
   std::vector<std::uint8_t> boundary_candidate_, marking_candidate_;
+  std::vector<float> width_share_;
   DetectorParams stripe_params_;
   StripeCheck stripe_check_;
   std::vector<Field> fields_;
