@@ -83,6 +83,8 @@ def test_calibrate_equals_the_cli(ssl_images_dir, ssl_images, cli, tmp_path):
     # The venue's detector: ELSED's finer anchor grid, with the stripes stage on.
     assert ours["detector"]["scan_interval"] == 2 and ours["detector"]["stripes"] is True
     assert ours["provenance"]["detector"] == theirs["provenance"]["detector"]
+    # The widest stripe from the frames' own stripes, recorded where it came from.
+    assert ours["detector"]["stripe_max_width"] == ours["provenance"]["detector"]["stripe_max_width"] <= 0.15
     # The result is an ordinary thresholds dict: a detector takes it, and it saves.
     fieldlines.LineDetector(ours).detect(ssl_images[0][1])
     fieldlines.save_thresholds_file(tmp_path / "robot.json", ours)
