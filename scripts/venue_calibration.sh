@@ -5,8 +5,8 @@
 # (tests/data/hand_truth/<venue>, docs/calibration.md), the two halves pooled. Rows: the built-in
 # thresholds; the calibration as the command makes it (detector parameters and thresholds,
 # detector_calibration.hpp), with its recall ceiling (every segment called a marking: the share
-# of line edges on any segment); that file with the turf's colours in several modes
-# (turf_colours.hpp) and with the coarse pass (coarse_scale 2 and 3 from half the height down).
+# of line edges on any segment); that file with the stripes' turf in the field colour alone
+# rather than the frame's turf colours (turf_colours.hpp) and with the coarse pass (coarse_scale 2 and 3 from half the height down).
 # Columns: marking P and R, the ceiling, the share of hand-drawn field-boundary columns within
 # 4 px. Prints Markdown. Overlays of the scored frames go to
 # OUT_DIR/overlays/<venue>/{built-in,calibrated}/ (not into docs/: they are the shared data's
@@ -56,8 +56,8 @@ if m['warning']: parts.append(m['warning'])
 if not f['boundary']['fitted']: parts.append('boundary off')
 print('; '.join(parts))")
   row "**calibrated** (detector + thresholds)" "$out/$id" "$says (first half)"
-  per_half detector_with "$out/$id" "$out/$id-turf" stripe_turf_colours=true
-  row "calibrated, stripes on turf colours" "$out/$id-turf"
+  per_half detector_with "$out/$id" "$out/$id-median" stripe_turf_colours=false
+  row "calibrated, stripes on the field colour alone" "$out/$id-median"
   for k in 2 3; do
     per_half detector_with "$out/$id" "$out/$id-coarse$k" coarse_scale=$k coarse_from=0.5
     row "calibrated, coarse pass $k" "$out/$id-coarse$k"

@@ -72,6 +72,26 @@ TEST(StripeWidth, TheVenuesLinesBoundItsStripesAndAWiderBarIsNoMarking) {
   EXPECT_GT(markings_between(frame, calibrated, 220, 240), 0) << "the line is kept";
 }
 
+// The rule on made-up stripes: the nearer half of the rows only, the widest with company.
+TEST(StripeWidth, TheWidestNearStripeWithCompanySetsTheLimit) {
+  std::vector<MarkedStripe> stripes;
+  for (int i = 0; i < 20; ++i) stripes.push_back({0.01, 100.0 + i});        // far pieces
+  for (int i = 0; i < 20; ++i) stripes.push_back({0.03 + 0.0005 * i, 400.0 + i});  // near lines
+  EXPECT_NEAR(stripe_width_limit(stripes, 0.15), 1.5 * 0.0395, 1e-9);
+  // Far, wide-looking stripes above the middle row say nothing of the near lines.
+  std::vector<MarkedStripe> with_far = stripes;
+  with_far.push_back({0.2, 50});
+  EXPECT_NEAR(stripe_width_limit(with_far, 0.15), 1.5 * 0.0395, 1e-9);
+  // A lone near stripe far wider than the rest (a leg) is passed over; two alike are company.
+  std::vector<MarkedStripe> with_leg = stripes;
+  with_leg.push_back({0.09, 420});
+  EXPECT_NEAR(stripe_width_limit(with_leg, 0.15), 1.5 * 0.0395, 1e-9);
+  with_leg.push_back({0.085, 425});
+  EXPECT_NEAR(stripe_width_limit(with_leg, 0.15), 0.135, 1e-9);
+  EXPECT_EQ(stripe_width_limit(with_leg, 0.1), 0.1) << "never above the given limit";
+  EXPECT_EQ(stripe_width_limit({stripes.begin(), stripes.begin() + 19}, 0.15), 0.15) << "too few stripes";
+}
+
 TEST(StripeWidth, FewStripesOrNoCheckKeepTheGivenLimit) {
   Venue none(0);
   EXPECT_EQ(calibrated_stripe_width(none.inputs, Thresholds{}, 0.15), 0.15);

@@ -58,7 +58,7 @@ float distance_to_line(float x, float y, cv::Point2f a, cv::Point2f b) {
 
 // The labels find_stripes leaves on horizontal marking edges from x 60 to 580, one per (row,
 // paint below it), the paint on the side the flag says.
-std::vector<Label> stripe_labels(const cv::Mat& frame, const std::optional<Rgb>& field,
+std::vector<Label> stripe_labels(const cv::Mat& frame, const FieldColours& field,
                                  const std::vector<std::pair<float, bool>>& rows, const FieldBoundary* on_field = nullptr) {
   std::vector<Segment> edges;
   for (const auto& [y, paint_below] : rows) {
@@ -411,6 +411,51 @@ TEST(Stripes, AFarLineOnShadedTurfIsMeasuredAgainstTheTurfBesideIt) {
   };
   EXPECT_EQ(stripes_at(59, 63), 2) << "the line on shaded turf";
   EXPECT_EQ(stripes_at(299, 303), 0) << "the same paint on sunlit turf";
+}
+
+// Turf whose light changes down the frame (sunlit at the top, bluer shade at the bottom): the
+// turf beside a line near the bottom is out of the median colour's tolerance, but among the
+// frame's own turf colours (stripe_turf_colours), which the calibration turns on.
+TEST(Stripes, ALineOnTurfInASecondLightIsAStripeOnTheTurfsColours) {
+  const cv::Vec3f sun(30, 160, 40), shade(80, 105, 25);  // B, G, R
+  cv::Mat clean(480, 640, CV_8UC3);
+  for (int y = 0; y < clean.rows; ++y) {
+    const cv::Vec3f c = sun + (shade - sun) * (float(y) / float(clean.rows - 1));
+    clean.row(y).setTo(cv::Scalar(c[0], c[1], c[2]));
+  }
+  clean.rowRange(440, 447).setTo(kPaint);
+  const cv::Mat frame = noisy(clean);
+  const std::optional<Rgb> field = estimate_field_colour(frame);
+  ASSERT_TRUE(field);
+  TurfColours turf;
+  turf.measure(frame, *field);
+  ASSERT_FALSE(turf.empty());
+  const std::vector<std::pair<float, bool>> edges{{439.5f, true}, {446.5f, false}};
+  const std::vector<Label> median_alone = stripe_labels(frame, field, edges);
+  const std::vector<Label> turf_colours = stripe_labels(frame, FieldColours(*field, &turf), edges);
+  EXPECT_EQ(std::count(median_alone.begin(), median_alone.end(), Label::Marking), 0) << "the shade is out of tolerance";
+  EXPECT_EQ(std::count(turf_colours.begin(), turf_colours.end(), Label::Marking), 2);
+}
+
+// A robot's dark body panel mirrors the turf's chromaticity at a third of its brightness: on the
+// turf's colours it is no turf (below 0.4 of the field colour), so a white bar along it is no
+// stripe.
+TEST(Stripes, ADarkPanelInTheTurfsChromaticityIsNoTurfOnTheTurfsColours) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  clean.rowRange(300, 341).setTo(kTurf * 0.3);
+  clean.rowRange(296, 300).setTo(kPaint);
+  clean.rowRange(150, 154).setTo(kPaint);  // a line on the turf, for comparison
+  const cv::Mat frame = noisy(clean);
+  const std::optional<Rgb> field = estimate_field_colour(frame);
+  ASSERT_TRUE(field);
+  TurfColours turf;
+  turf.measure(frame, *field);
+  ASSERT_FALSE(turf.empty());
+  const std::vector<Label> labels =
+      stripe_labels(frame, FieldColours(*field, &turf), {{295.5f, true}, {149.5f, true}, {153.5f, false}});
+  EXPECT_EQ(labels[0], Label::None) << "the bar beside the panel";
+  EXPECT_EQ(labels[1], Label::Marking);
+  EXPECT_EQ(labels[2], Label::Marking);
 }
 
 // The field's edge at row 200 against a light floor strip 16 px tall, with the next field's turf

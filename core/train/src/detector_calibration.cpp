@@ -112,6 +112,7 @@ DetectorParams field_detector(const DetectorParams& given, const DetectorCalibra
   d.scan_interval = params.scan_interval;
   d.min_line_length = params.min_line_length;
   d.stripes = true;
+  d.stripe_turf_colours = params.stripe_turf_colours;
   return d;
 }
 

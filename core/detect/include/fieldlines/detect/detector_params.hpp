@@ -40,7 +40,8 @@ struct DetectorParams {
   bool stripe_require_twin = false;
   // The stripes' turf in every colour the frame's own turf shows (turf_colours.hpp: sun and
   // shade, patchy turf), not only within a tolerance of its median colour (the field boundary
-  // always takes them). Off: the median's colour alone (docs/detector.md has both measured).
+  // always takes them). Off: the median's colour alone. Calibration turns it on (measured both
+  // ways in docs/detector.md).
   bool stripe_turf_colours = false;
   // L, T and X junctions of the stripes' centre lines (intersections.hpp). Off by default like
   // the stripes; on, it runs the stripes stage too (its input).

@@ -14,11 +14,15 @@
 // where it lowers it, it won recall on one venue and lost 0.15 of precision on another
 // (docs/calibration.md, "A dim field"). The field's contrast is measured and recorded either way.
 //
+// The stripes take their turf in every colour of the frame's own turf (stripe_turf_colours), as
+// the field boundary does: on the held-out venues recall +0.019 to +0.041 on De Locht, Bordeaux
+// and Humanoid, precision -0.017 on Bangkok (docs/calibration.md).
+//
 // The coarse pass (DetectorParams::coarse_scale) is chosen from the frames too: each frame is
 // detected with and without it, every segment offered as a marking, and the length of the
 // stripes (turf, paint, turf, below the field boundary) compared. Where wide near lines on
-// textured turf break up at the full scale, the coarse pass adds a quarter or more to that length
-// (Humanoid frames: 0.26, 0.29 on two halves); elsewhere less than a seventh (MSL 0.05-0.13, SSL
+// textured turf break up at the full scale, the coarse pass adds a fifth or more to that length
+// (Humanoid frames: 0.21, 0.26 on two halves); elsewhere less than a tenth (MSL 0.003-0.08, SSL
 // 0), where it adds more clutter than lines
 // (docs/detector.md, "The coarse pass").
 //
@@ -39,6 +43,7 @@ struct DetectorCalibrationParams {
   int gaussian_kernel = 5;          // ELSED's defaults: the recall ceiling rises (see the header)
   int scan_interval = 2;
   int min_line_length = 25;
+  bool stripe_turf_colours = true;  // the stripes' turf in every colour of the frame's own (see the header)
   double texture_percentile = 90;   // of the gradient on a frame's green pixels: its turf texture
   double paint_percentile = 99.5;   // of the same: its strongest edges, the paint's
   double paint_share = 0.25;        // the threshold keeps edges of this share of the paint's contrast

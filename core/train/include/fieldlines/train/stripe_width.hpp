@@ -10,11 +10,11 @@
 // the nearer half of their rows, never above the given one (wider paint was never measured).
 // The widest rather than a percentile: an outlier raises the limit towards the given one, which
 // costs the gain and no recall, while a low estimate cuts the venue's near lines (a percentile
-// counts the many far pieces). Held-out venues (docs/calibration.md, "The widest stripe"):
-// Humanoid marking precision 0.935 -> 0.956 at unchanged recall, SSL recall 0.776 -> 0.773, the
-// MSL venues unchanged; a margin of 1.25 costs Bordeaux 0.016 of recall, one of 2 leaves
-// Humanoid at 0.945.
+// counts the many far pieces). The widest with company, though: a stripe wider than `margin`
+// times every other is passed over (a person's leg on the turf, with one edge marked).
+// Measured on the held-out venues: docs/calibration.md, "The widest stripe".
 #include <cstddef>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +28,14 @@ struct StripeWidthParams {
   double margin = 1.5;
   std::size_t min_stripes = 20;  // fewer measured stripes: the given limit is kept
 };
+
+struct MarkedStripe {
+  double share;  // its width as width_share (stripes.hpp)
+  double row;    // its row, px
+};
+
+// The rule above on the marked stripes: `given` when fewer than min_stripes.
+double stripe_width_limit(const std::vector<MarkedStripe>& stripes, double given, const StripeWidthParams& params = {});
 
 // The venue's stripe_max_width from `inputs` (with the stripe check on) and the thresholds fitted
 // on them (calibrated_thresholds); `given` where fewer than min_stripes marked stripes were
