@@ -132,6 +132,7 @@ TEST_F(Calibrate, PicturesChooseTheDetectorAndKeepDetectorKeepsTheGivenOne) {
   EXPECT_EQ(file.detector.gaussian_kernel, 5);
   EXPECT_EQ(file.detector.min_line_length, 25);
   EXPECT_TRUE(file.detector.stripes);
+  EXPECT_TRUE(file.detector.stripe_turf_colours);
   EXPECT_GE(file.detector.gradient_threshold, 8);
   EXPECT_LE(file.detector.gradient_threshold, fl::DetectorParams{}.gradient_threshold);
   EXPECT_TRUE(file.provenance["detector"]["calibrated"].get<bool>());

@@ -297,6 +297,7 @@ TEST(DetectorCalibration, ChoosesTheAnchorGridAndStripesAndMeasuresTheFieldsCont
   EXPECT_EQ(b.gaussian_kernel, 5);
   EXPECT_EQ(b.min_line_length, 25);
   EXPECT_TRUE(b.stripes);
+  EXPECT_TRUE(b.stripe_turf_colours);
   // By default the given threshold (measured: lowering it is mixed). Following the contrast,
   // strong paint keeps it and faint paint lowers it, never below the floor.
   EXPECT_EQ(b.gradient_threshold, given.gradient_threshold);
