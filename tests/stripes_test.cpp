@@ -413,6 +413,19 @@ TEST(Stripes, AFarLineOnShadedTurfIsMeasuredAgainstTheTurfBesideIt) {
   EXPECT_EQ(stripes_at(299, 303), 0) << "the same paint on sunlit turf";
 }
 
+// `clean` with noise, its field colour and its turf colours as the detector measures them.
+struct TurfFrame {
+  cv::Mat frame;
+  std::optional<Rgb> field;
+  TurfColours turf;
+};
+TurfFrame turf_frame(const cv::Mat& clean) {
+  TurfFrame t{noisy(clean), {}, {}};
+  t.field = estimate_field_colour(t.frame);
+  if (t.field) t.turf.measure(t.frame, *t.field);
+  return t;
+}
+
 // Turf whose light changes down the frame (sunlit at the top, bluer shade at the bottom): the
 // turf beside a line near the bottom is out of the median colour's tolerance, but among the
 // frame's own turf colours (stripe_turf_colours), which the calibration turns on.
@@ -424,15 +437,12 @@ TEST(Stripes, ALineOnTurfInASecondLightIsAStripeOnTheTurfsColours) {
     clean.row(y).setTo(cv::Scalar(c[0], c[1], c[2]));
   }
   clean.rowRange(440, 447).setTo(kPaint);
-  const cv::Mat frame = noisy(clean);
-  const std::optional<Rgb> field = estimate_field_colour(frame);
-  ASSERT_TRUE(field);
-  TurfColours turf;
-  turf.measure(frame, *field);
-  ASSERT_FALSE(turf.empty());
+  const TurfFrame t = turf_frame(clean);
+  ASSERT_TRUE(t.field);
+  ASSERT_FALSE(t.turf.empty());
   const std::vector<std::pair<float, bool>> edges{{439.5f, true}, {446.5f, false}};
-  const std::vector<Label> median_alone = stripe_labels(frame, field, edges);
-  const std::vector<Label> turf_colours = stripe_labels(frame, FieldColours(*field, &turf), edges);
+  const std::vector<Label> median_alone = stripe_labels(t.frame, t.field, edges);
+  const std::vector<Label> turf_colours = stripe_labels(t.frame, FieldColours(*t.field, &t.turf), edges);
   EXPECT_EQ(std::count(median_alone.begin(), median_alone.end(), Label::Marking), 0) << "the shade is out of tolerance";
   EXPECT_EQ(std::count(turf_colours.begin(), turf_colours.end(), Label::Marking), 2);
 }
@@ -445,14 +455,11 @@ TEST(Stripes, ADarkPanelInTheTurfsChromaticityIsNoTurfOnTheTurfsColours) {
   clean.rowRange(300, 341).setTo(kTurf * 0.3);
   clean.rowRange(296, 300).setTo(kPaint);
   clean.rowRange(150, 154).setTo(kPaint);  // a line on the turf, for comparison
-  const cv::Mat frame = noisy(clean);
-  const std::optional<Rgb> field = estimate_field_colour(frame);
-  ASSERT_TRUE(field);
-  TurfColours turf;
-  turf.measure(frame, *field);
-  ASSERT_FALSE(turf.empty());
+  const TurfFrame t = turf_frame(clean);
+  ASSERT_TRUE(t.field);
+  ASSERT_FALSE(t.turf.empty());
   const std::vector<Label> labels =
-      stripe_labels(frame, FieldColours(*field, &turf), {{295.5f, true}, {149.5f, true}, {153.5f, false}});
+      stripe_labels(t.frame, FieldColours(*t.field, &t.turf), {{295.5f, true}, {149.5f, true}, {153.5f, false}});
   EXPECT_EQ(labels[0], Label::None) << "the bar beside the panel";
   EXPECT_EQ(labels[1], Label::Marking);
   EXPECT_EQ(labels[2], Label::Marking);
