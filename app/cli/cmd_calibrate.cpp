@@ -41,11 +41,13 @@ PATH is an image, a folder of images, a video (every N-th frame), a project file
 CSV (its label columns may be missing).
 
 Detector: from images and videos it chooses the detector parameters too and writes them into the
-file: ELSED's anchor grid and smoothing (scan interval 2, kernel 5), minimum length 25 and the
-stripes stage on (markings must be turf, paint, turf); the rest, the gradient threshold
-included, from --thresholds (default built-in). --keep-detector keeps the detector parameters
-of --thresholds instead; segments from a project or CSV keep them always (they were detected
-already).
+file: ELSED's anchor grid and smoothing (scan interval 2, kernel 5), minimum length 25, the
+stripes stage on (markings must be turf, paint, turf; the turf in any of the frame's own turf
+colours), no stripe wider than the venue's own stripes allow (1.5 times the widest it marks
+near the camera), and a coarse pass where wide near lines break up; the rest, the gradient
+threshold included, from --thresholds (default built-in). --keep-detector keeps the detector
+parameters of --thresholds instead; segments from a project or CSV keep them always (they were
+detected already).
 
 A class the images do not show (no boundary wall, say) is disabled and reported; a weak fit
 (few edges, classes that overlap) is kept with a warning. When the markings cannot be fitted
