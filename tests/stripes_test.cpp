@@ -56,15 +56,17 @@ float distance_to_line(float x, float y, cv::Point2f a, cv::Point2f b) {
   return std::abs((x - a.x) * dy - (y - a.y) * dx) / std::hypot(dx, dy);
 }
 
-// The labels find_stripes leaves on horizontal marking edges from x 60 to 580, one per (row,
-// paint below it), the paint on the side the flag says.
+// A horizontal marking edge on row `y` from x 60 to 580, its paint below it or above.
+Segment row_edge(float y, bool paint_below) {
+  const float g = paint_below ? 50.f : -50.f;
+  return {.x0 = 60, .y0 = y, .x1 = 580, .y1 = y, .grad_y = {g, g, g}, .label = Label::Marking};
+}
+
+// The labels find_stripes leaves on row_edge()s, one per (row, paint below it).
 std::vector<Label> stripe_labels(const cv::Mat& frame, const FieldColours& field,
                                  const std::vector<std::pair<float, bool>>& rows, const FieldBoundary* on_field = nullptr) {
   std::vector<Segment> edges;
-  for (const auto& [y, paint_below] : rows) {
-    const float g = paint_below ? 50.f : -50.f;
-    edges.push_back({.x0 = 60, .y0 = y, .x1 = 580, .y1 = y, .grad_y = {g, g, g}, .label = Label::Marking});
-  }
+  for (const auto& [y, paint_below] : rows) edges.push_back(row_edge(y, paint_below));
   StripeWorkspace work;
   std::vector<Marking> out;
   find_stripes(frame, field, edges, stripes_on(), work, out, ThinLines::Level, Shape::Any, on_field);
@@ -594,10 +596,8 @@ TEST(Stripes, TheCheckMeasuresEachStripesWidthAsAShareOfItsRow) {
   cv::rectangle(clean, cv::Point(0, 396), cv::Point(639, 404), kPaint, cv::FILLED);  // 9 px at row 400
   cv::rectangle(clean, cv::Point(0, 98), cv::Point(639, 102), kPaint, cv::FILLED);   // 5 px at row 100
   const cv::Mat frame = noisy(clean);
-  const auto edge = [](float y, float g) {
-    return Segment{.x0 = 60, .y0 = y, .x1 = 580, .y1 = y, .grad_y = {g, g, g}};
-  };
-  const std::vector<Segment> segments{edge(395.5f, 50), edge(404.5f, -50), edge(97.5f, 50), edge(250, 50)};
+  const std::vector<Segment> segments{row_edge(395.5f, true), row_edge(404.5f, false), row_edge(97.5f, true),
+                                      row_edge(250, true)};
   StripeCheck check;
   ASSERT_TRUE(check.run(frame, estimate_field_colour(frame), segments, stripes_on()));
   ASSERT_EQ(check.width_shares().size(), segments.size());
