@@ -488,6 +488,43 @@ TEST(Stripes, AStripeWhosePaintLiesBeyondTheFieldBoundaryIsNone) {
   EXPECT_EQ(stripe_labels(frame, field, edges, &boundary), (std::vector<Label>{Label::None, Label::Marking}));
 }
 
+// A line painted along the field's edge (edge_lines.hpp): the field's dark surround above row
+// 200, two rows of paint, then turf. The segment drawn at the surround's edge is none by its
+// colours; along the field boundary its profiles show surround, paint and turf, so it becomes a
+// marking with the paint's centre line. Without the boundary, with no paint, with the paint a few
+// rows inside the turf (the turf's own edge outside it), or labelled a boundary edge, it stays.
+TEST(Stripes, ALineAlongTheFieldsEdgeIsAMarking) {
+  const auto frame_with = [](int paint_row, int paint_rows) {
+    cv::Mat clean(480, 640, CV_8UC3, kTurf);
+    clean.rowRange(0, 200).setTo(kDark);
+    if (paint_rows > 0) clean.rowRange(paint_row, paint_row + paint_rows).setTo(kPaint);
+    return noisy(clean);
+  };
+  FieldBoundary boundary;
+  boundary.image_height = 480;
+  boundary.points = {{0, 200}, {639, 200}};
+  // The labels find_stripes leaves on the surround's edge (labelled `label`), and its markings.
+  const auto edge_after = [&](const cv::Mat& frame, Label label, const FieldBoundary* on_field) {
+    Segment edge = row_edge(199.5f, true);
+    edge.label = label;
+    std::vector<Segment> segments{edge};
+    StripeWorkspace work;
+    std::vector<Marking> out;
+    find_stripes(frame, estimate_field_colour(frame), segments, stripes_on(), work, out, ThinLines::Level,
+                 Shape::Any, on_field);
+    return std::pair{segments[0].label, out};
+  };
+  const cv::Mat line = frame_with(200, 2);
+  const auto [label, markings] = edge_after(line, Label::None, &boundary);
+  EXPECT_EQ(label, Label::Marking);
+  ASSERT_EQ(markings.size(), 1u);
+  expect_centre_line(markings[0], {0, 200.5f}, {639, 200.5f}, 2);
+  EXPECT_EQ(edge_after(line, Label::None, nullptr).first, Label::None) << "no field boundary";
+  EXPECT_EQ(edge_after(line, Label::Boundary, &boundary).first, Label::Boundary) << "the boundary class's";
+  EXPECT_EQ(edge_after(frame_with(0, 0), Label::None, &boundary).first, Label::None) << "no paint";
+  EXPECT_EQ(edge_after(frame_with(205, 2), Label::None, &boundary).first, Label::None) << "turf before the paint";
+}
+
 // A wide line near the camera along the frame's dark rim (a fisheye's corner, the robot's own
 // body at the frame's bottom): turf, paint, then dark to the frame's border. No turf returns,
 // but nothing lies beyond the rim: a stripe. The same paint with turf again past a dark band

@@ -6,26 +6,25 @@
 #include <tuple>
 #include <utility>
 
+#include "edge_lines.hpp"
 #include "field_pixel.hpp"
+#include "paint_profile.hpp"
 
 namespace fieldlines {
 namespace {
 
 using Candidate = StripeWorkspace::Candidate;
+using namespace paint;
 
-constexpr int kOuterPx = 2;      // the profile starts this far outside the edge, beyond its blur
-constexpr int kMaxBlurPx = 10;   // paint fades into turf over at most this many px (motion blur)...
-// ...none darker than this share of the turf on its side (of the field colour where that turf is
-// brighter): a lens's colour fringe along a wide line (blue or yellow, 0.75 to 0.85 of the turf)
+// Between paint and turf only blur (paint::kMaxBlurPx), none darker than this share of the turf
+// on its side (of the field colour where that turf is brighter): a lens's colour fringe along a wide line (blue or yellow, 0.75 to 0.85 of the turf)
 // is blur; a robot's dark body (0.3 to 0.5) is not. Held-out MSL venues, calibrated: recall 0.730
 // -> 0.757 (De Locht), 0.578 -> 0.610 (Bangkok), 0.729 -> 0.739 (Bordeaux) against 0.85, no
 // precision lost; Humanoid and SSL unchanged. Against the turf's own brightness instead of the
 // field colour's alone (a vignetted corner): Bangkok 0.981 / 0.643 -> 0.983 / 0.676, Humanoid's
 // precision 0.941 -> 0.935 (one goal's ground bar, shaded turf inside the goal beside it).
 constexpr float kBlurShade = 0.7f;
-constexpr float kMinWidthPx = 0.5f;
 constexpr float kShadedTurf = 0.8f;      // paint's contrast is against turf down to this share of the field colour
-constexpr float kTopWidthShare = 0.25f;  // the widest stripe on the top row, as a share of the bottom's
 constexpr float kTwinCos = 0.9962f;      // cos(5 degrees): twins are this parallel...
 constexpr float kTwinWidthShare = 0.35f; // ...their distance within this share of the width...
 constexpr float kTwinMinSlackPx = 2;     // ...or this many pixels, whichever is more
@@ -74,29 +73,12 @@ struct Profile {
   bool thin = false;  // a stripe only as paint too thin to leave the field colour (ThinLines)
 };
 
-float brightness(const std::uint8_t* p) { return float(p[0] + p[1] + p[2]); }  // exact: one conversion
-
 // Whether two pixels show the same turf: chromaticity within the field pixel rule's tolerance,
 // brightness within a fifth.
 bool same_turf(const std::uint8_t* a, const std::uint8_t* b) {
   const float sa = std::max(brightness(a), 1.f), sb = std::max(brightness(b), 1.f);
   if (sb < 0.8f * sa || sb > 1.2f * sa) return false;
   return std::abs(a[2] / sa - b[2] / sb) + std::abs(a[1] / sa - b[1] / sb) <= FieldBoundaryParams{}.chroma_tolerance;
-}
-
-// Distance of a pixel's chromaticity from grey: |r - 1/3| + |g - 1/3|, r = R / (R + G + B).
-float greyness_distance(const std::uint8_t* p) {
-  const float sum = std::max(brightness(p), 1.f);
-  return std::abs(p[2] / sum - 1.f / 3) + std::abs(p[1] / sum - 1.f / 3);
-}
-
-// Whether `peak`, brighter than `turf` and still in the field colour, is grey paint blended into
-// turf (a line thinner than a pixel, or anti-aliased) rather than brighter turf. Grey light added
-// to turf scales its distance from grey by turf / peak brightness; brighter turf keeps it. The
-// peak must come at least half-way from the one to the other.
-bool blended_paint(const std::uint8_t* peak, const std::uint8_t* turf) {
-  const float ratio = std::min(1.f, brightness(turf) / std::max(brightness(peak), 1.f));
-  return greyness_distance(peak) <= 0.5f * (1 + ratio) * greyness_distance(turf);
 }
 
 // Where between steps i and i + 1 the brightness crosses `level`, in steps.
@@ -228,11 +210,6 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
   return {Verdict::Stripe, width, 0.5f * (near_edge + far_edge) - float(back), static_cast<bool>(turf[peak])};
 }
 
-float median(std::array<float, 32>& v, int n) {
-  std::nth_element(v.begin(), v.begin() + n / 2, v.begin() + n);
-  return v[static_cast<std::size_t>(n / 2)];
-}
-
 // The centre offsets at the segment's ends (f = 0 and 1) of the line through (f[i], offset[i]):
 // the median of the pairwise slopes and the median intercept (Theil-Sen), so one profile that
 // crossed a robot's foot or a neighbouring line does not tilt it.
@@ -291,10 +268,6 @@ bool movable(const Candidate& c) {
   return std::abs(c.edge_median) >= kMinEdgeShiftPx && c.edge_spread <= kMaxEdgeSpreadPx &&
          std::abs(c.edge0) <= limit && std::abs(c.edge1) <= limit;
 }
-
-// The height the largest plausible width scales with at row `y` (stripes.hpp): the frame's own
-// at the bottom, kTopWidthShare of it on the top rows.
-float width_scale(float y, int rows) { return float(rows) * std::max(kTopWidthShare, y / float(rows)); }
 
 // Whether a candidate lies too far off its paint's edge to be that edge (kMaxOffEdgePx).
 bool off_its_edge(const Candidate& c) { return std::abs(c.edge_median) > kMaxOffEdgePx && !movable(c); }
@@ -528,6 +501,16 @@ void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segm
       }
       work.candidates.push_back(c);
     }
+    // Lines along the field's edge: segments the colours left as none (edge_lines.hpp).
+    if (on_field && !on_field->empty())
+      for (std::size_t i = 0; i < segments.size(); ++i) {
+        if (segments[i].label != Label::None || place_of(segments[i], *on_field) != BoundaryPlace::Along) continue;
+        Candidate c;
+        c.segment = i;
+        if (!edge_line(bgr8, pixel, segments[i], params, c)) continue;
+        segments[i].label = Label::Marking;  // pair_stripes keeps what is among the candidates
+        work.candidates.push_back(c);
+      }
   }
   pair_stripes(segments, work.candidates, params, out);
 }

@@ -117,6 +117,10 @@ enum class Shape : std::uint8_t { Any, Straight };
 // `on_field`: when given, a stripe whose paint's centre lies above that field boundary by more
 // than a line's blur (lies_above) is none: paint lies on the field, and an edge along the
 // boundary whose bright side is beyond it is the field's edge against a light floor or boards.
+// With `on_field`, a segment labelled None along that boundary that is the outer edge of a line
+// painted along the field's edge (the field's dark surround, paint, turf; edge_lines.hpp in
+// the sources) becomes a Marking, with its stripe: the surround's strong edge is the one the
+// detector draws there, and its colours are no marking's.
 // Relabels `segments` in place and writes one Marking per stripe into `out` (cleared first).
 void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segment> segments,
                   const DetectorParams& params, StripeWorkspace& work, std::vector<Marking>& out,

@@ -1,0 +1,43 @@
+#pragma once
+// What the profiles across painted lines share (stripes.cpp, edge_lines.cpp): how far a profile
+// reaches, a pixel's brightness, grey paint blended into turf, the widest plausible paint per row.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace fieldlines::paint {
+
+constexpr int kOuterPx = 2;        // a profile starts this far outside the edge, beyond its blur
+constexpr int kMaxBlurPx = 10;     // paint fades into turf over at most this many px (motion blur)
+constexpr float kMinWidthPx = 0.5f;
+constexpr float kTopWidthShare = 0.25f;  // the widest stripe on the top row, as a share of the bottom's
+
+inline float brightness(const std::uint8_t* p) { return float(p[0] + p[1] + p[2]); }  // exact: one conversion
+
+// Distance of a pixel's chromaticity from grey: |r - 1/3| + |g - 1/3|, r = R / (R + G + B).
+inline float greyness_distance(const std::uint8_t* p) {
+  const float sum = std::max(brightness(p), 1.f);
+  return std::abs(p[2] / sum - 1.f / 3) + std::abs(p[1] / sum - 1.f / 3);
+}
+
+// Whether `peak`, brighter than `turf` and still in the field colour, is grey paint blended into
+// turf (a line thinner than a pixel, or anti-aliased) rather than brighter turf. Grey light added
+// to turf scales its distance from grey by turf / peak brightness; brighter turf keeps it. The
+// peak must come at least half-way from the one to the other.
+inline bool blended_paint(const std::uint8_t* peak, const std::uint8_t* turf) {
+  const float ratio = std::min(1.f, brightness(turf) / std::max(brightness(peak), 1.f));
+  return greyness_distance(peak) <= 0.5f * (1 + ratio) * greyness_distance(turf);
+}
+
+// The height the largest plausible width scales with at row `y` (stripes.hpp): the frame's own
+// at the bottom, kTopWidthShare of it on the top rows.
+inline float width_scale(float y, int rows) { return float(rows) * std::max(kTopWidthShare, y / float(rows)); }
+
+// The median of the first n values (reordered).
+inline float median(std::array<float, 32>& v, int n) {
+  std::nth_element(v.begin(), v.begin() + n / 2, v.begin() + n);
+  return v[static_cast<std::size_t>(n / 2)];
+}
+
+}  // namespace fieldlines::paint
