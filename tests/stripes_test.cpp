@@ -527,8 +527,9 @@ TEST(Stripes, ALineAlongTheFieldsEdgeIsAMarking) {
 
 // A wide line near the camera along the frame's dark rim (a fisheye's corner, the robot's own
 // body at the frame's bottom): turf, paint, then dark to the frame's border. No turf returns,
-// but nothing lies beyond the rim: a stripe. The same paint with turf again past a dark band
-// (a robot's white bar beside its dark body) is none.
+// but nothing lies beyond the rim: a stripe, from either edge (the edge against the rim has the
+// rim outside it). The same paint with turf again past a dark band (a robot's white bar beside
+// its dark body) is none from either edge.
 TEST(Stripes, AWideLineAlongTheFramesDarkRimIsAStripe) {
   const auto frame_with_dark_until = [](int dark_end) {
     cv::Mat clean(480, 640, CV_8UC3, kTurf);
@@ -540,7 +541,9 @@ TEST(Stripes, AWideLineAlongTheFramesDarkRimIsAStripe) {
   const std::optional<Rgb> field = estimate_field_colour(rim);
   ASSERT_TRUE(field);
   EXPECT_EQ(stripe_labels(rim, field, {{419, true}}), std::vector<Label>{Label::Marking});
+  EXPECT_EQ(stripe_labels(rim, field, {{440, false}}), std::vector<Label>{Label::Marking}) << "the edge on the rim";
   EXPECT_EQ(stripe_labels(body, estimate_field_colour(body), {{419, true}}), std::vector<Label>{Label::None});
+  EXPECT_EQ(stripe_labels(body, estimate_field_colour(body), {{440, false}}), std::vector<Label>{Label::None});
 }
 
 // The studio's one pass (run_with_thin_lines) flags what a run with thin lines taken when level

@@ -124,22 +124,19 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
   };
   const std::vector<float>& b = work.brightness;
   const std::vector<std::uint8_t>& turf = work.is_field;
-  // Turf outside the edge, in the frame's field colour.
-  inside(back);
-  int outside = std::min(back, read - 1);
-  while (outside >= 0 && !turf[outside]) --outside;
-  if (outside < 0) return {};
-  // The frame's own rim, which may take the far turf's place (below): a line near the camera
-  // running along the lens's dark corner or the robot's own body at the frame's bottom. Dark from
-  // step i on, then no field and mostly dark to the frame's bottom or side border, close by: a
-  // robot's dark body beside its white bar has turf beyond it, or stands off the border.
-  const auto rim_at = [&](int i) {
+  // The frame's own rim: dark at step i, then no field and mostly dark from there along `dir`
+  // (+1 into the paint side, -1 out past the edge) to the frame's bottom or side border, close
+  // by. A line near the camera runs along the lens's dark corner or the robot's own body at the
+  // frame's bottom, which takes the turf's place on that side; a robot's dark body beside its
+  // white bar has turf beyond it, or stands off the border.
+  const auto rim_from = [&](int i, int dir) {
     const float dark = kBlurShade * pixel.field_sum();
-    if (b[i] >= dark) return false;
+    if (b[static_cast<std::size_t>(i)] >= dark) return false;
     const float reach = kRimShare * float(bgr.rows);
     int seen = 0, dark_seen = 0;
-    for (float t = float(i - back); t <= float(i - back) + reach; t += 1.f) {
-      const long x = std::lround(px + t * sx), y = std::lround(py + t * sy);
+    for (float t = 0; t <= reach; t += 1.f) {
+      const float at = float(i - back) + float(dir) * t;
+      const long x = std::lround(px + at * sx), y = std::lround(py + at * sy);
       if (y < 0) return false;  // out through the top: walls, not the frame's rim
       if (x < 0 || x >= bgr.cols || y >= bgr.rows) return 4 * dark_seen >= 3 * seen;  // mostly dark
       const std::uint8_t* p = bgr.ptr<std::uint8_t>(static_cast<int>(y)) + 3 * x;
@@ -148,6 +145,15 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
     }
     return false;
   };
+  // Turf outside the edge, in the frame's field colour, or the frame's rim just past the edge's
+  // blur (a near line's edge along the robot's own body: the line's other edge has the rim on
+  // its far side, below).
+  inside(back);
+  int outside = std::min(back, read - 1);
+  while (outside >= 0 && !turf[outside]) --outside;
+  const bool rim_outside = outside < 0 && read > back - kOuterPx && rim_from(back - kOuterPx, -1);
+  if (rim_outside) outside = back - kOuterPx;
+  if (outside < 0) return {};
   // Turf returns on the paint side: the first pixel past the edge in the field colour or in the
   // colour of the turf outside (far turf in haze or in another light misses the frame's
   // colour), and darker than half-way to the paint (blurred paint can pass the colour test).
@@ -158,33 +164,43 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
   float level = 0;
   bool rim = false;  // far_turf is the frame's rim, not turf
   float beyond = 0;  // the turf's brightness past the paint: the turf outside's against the rim
+  float near_side = 0;  // ...and outside the edge: the turf past the paint's against the rim
+  // With the rim outside, only turf in the field colour returns (there is no turf outside to
+  // match), and the rim again is no line on turf.
+  const auto turf_returns = [&](int i) {
+    if (turf[i]) return true;
+    if (rim_outside) return false;
+    return same_turf(outside_pixel, work.pixels[i]) || (rim = rim_from(i, 1));
+  };
   for (;;) {
     do ++far_turf;
-    while (inside(far_turf) && !turf[far_turf] && !same_turf(outside_pixel, work.pixels[far_turf]) &&
-           !(rim = rim_at(far_turf)));
+    while (inside(far_turf) && !turf_returns(far_turf));
     if (!inside(far_turf)) return {cut ? Verdict::Cut : Verdict::No};
     for (int i = peak + 1; i <= far_turf; ++i)
       if (b[i] > b[peak]) peak = i;
     if (peak == far_turf) continue;  // brighter than all before it: faint paint, not turf
     // Half-way between the paint and the turf on either side, so blur widens nothing; against
-    // the rim, the turf outside alone.
+    // the rim, the turf on the other side alone.
     beyond = rim ? b[outside] : b[far_turf];
-    level = 0.5f * (b[peak] + 0.5f * (b[outside] + beyond));
+    near_side = rim_outside ? beyond : b[outside];
+    level = 0.5f * (b[peak] + 0.5f * (near_side + beyond));
     if (b[far_turf] < level) break;
   }
   // Brighter than the turf beside it, or than the field colour where that is darker: turf in a
   // wall's shade is darker than the frame's field colour, and a thin far line on it less bright
   // than that (SSL: 4 of the 129 markings of the authors' 41 frames). Not below kShadedTurf of
   // the field colour: dim frames' turf texture would pass (docs/detector.md).
-  const float turf_beside = std::clamp(0.5f * (b[outside] + beyond), kShadedTurf * pixel.field_sum(), pixel.field_sum());
+  const float turf_beside = std::clamp(0.5f * (near_side + beyond), kShadedTurf * pixel.field_sum(), pixel.field_sum());
   if (b[peak] < kPaintContrast * turf_beside) return {};
   // Paint leaves the field colour; a line too thin to fill a pixel may not, and is taken only
   // when asked: its peak is turf with grey blended in, against the turf on both sides.
-  if (turf[peak] && (rim || !(take_thin && blended_paint(work.pixels[peak], work.pixels[outside]) &&
+  if (turf[peak] && (rim || rim_outside || !(take_thin && blended_paint(work.pixels[peak], work.pixels[outside]) &&
                                blended_paint(work.pixels[peak], work.pixels[far_turf]))))
     return {};
+  // The paint's near side: turf below the level, or the rim outside.
   int near_turf = peak - 1;
-  while (near_turf >= 0 && !(turf[near_turf] && b[near_turf] < level)) --near_turf;
+  while (near_turf >= 0 && !(turf[near_turf] && b[near_turf] < level) && !(rim_outside && near_turf == outside))
+    --near_turf;
   if (near_turf < 0) return {};
   int lo = peak, hi = peak;
   while (b[lo - 1] >= level) --lo;  // stops after near_turf, stays below it
@@ -200,7 +216,9 @@ Profile measure_profile(const cv::Mat& bgr, const FieldPixel& pixel, float px, f
       if (b[i] < floor) return false;
     return true;
   };
-  if (!fades(near_turf + 1, lo, b[near_turf]) || !fades(hi + 1, far_turf, beyond)) return {};
+  // Against the rim outside only the fade's length: the rim is dark by what it is.
+  if (rim_outside ? lo - near_turf > kMaxBlurPx : !fades(near_turf + 1, lo, b[near_turf])) return {};
+  if (!fades(hi + 1, far_turf, beyond)) return {};
   const float near_edge = crossing(b, lo - 1, level), far_edge = crossing(b, hi, level);
   const float width = far_edge - near_edge;
   if (width < kMinWidthPx || width > max_width) return {};

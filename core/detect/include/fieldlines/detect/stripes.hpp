@@ -6,7 +6,8 @@
 // Each segment labelled Marking is checked by profiles across it at `stripe_samples` points
 // along its length, read in the 8-bit BGR frame from outside its edge into its bright side (the
 // side its colour gradient points to; the image decides when the gradients are zero):
-//  - turf in the frame's field colour (features/field_pixel.hpp) outside the edge;
+//  - turf in the frame's field colour (features/field_pixel.hpp) outside the edge, or the
+//    frame's dark rim (below) just past its blur, when turf past the paint is in that colour;
 //  - paint: a peak brighter by a tenth than the turf on both sides, or than the field colour
 //    where that is darker (turf in a wall's shade, down to 0.8 of the field colour), and out of
 //    the field colour (see ThinLines for paint too thin to leave it);
