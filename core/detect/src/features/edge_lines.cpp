@@ -84,10 +84,7 @@ bool edge_line(const cv::Mat& bgr, const FieldPixel& pixel, const Segment& s, co
   const float dx = s.x1 - s.x0, dy = s.y1 - s.y0, len = std::hypot(dx, dy);
   if (!(len > 0.f)) return false;
   c.ux = dx / len, c.uy = dy / len;
-  // The bright side is the one the colour gradient points to.
-  float nx = -c.uy, ny = c.ux, along = 0;
-  for (int ch = 0; ch < 3; ++ch) along += s.grad_x[ch] * nx + s.grad_y[ch] * ny;
-  if (along < 0) nx = -nx, ny = -ny;
+  const auto [nx, ny] = bright_side(bgr, s, c.ux, c.uy);
   constexpr float kMinDown = 0.5f;  // within 60 degrees of straight down the frame
   if (!(ny > kMinDown)) return false;
   c.sx = nx, c.sy = ny;

@@ -6,6 +6,10 @@
 #include <cmath>
 #include <cstdint>
 
+#include <opencv2/core/mat.hpp>
+
+#include "fieldlines/detect/segment.hpp"
+
 namespace fieldlines::paint {
 
 constexpr int kOuterPx = 2;        // a profile starts this far outside the edge, beyond its blur
@@ -33,6 +37,24 @@ inline bool blended_paint(const std::uint8_t* peak, const std::uint8_t* turf) {
 // The height the largest plausible width scales with at row `y` (stripes.hpp): the frame's own
 // at the bottom, kTopWidthShare of it on the top rows.
 inline float width_scale(float y, int rows) { return float(rows) * std::max(kTopWidthShare, y / float(rows)); }
+
+// The unit normal of segment s (unit direction (ux, uy)) towards its bright side: the side its
+// colour gradient points to; the 8-bit BGR image decides when the gradients say nothing (a
+// caller's own segments).
+inline std::array<float, 2> bright_side(const cv::Mat& bgr, const Segment& s, float ux, float uy) {
+  float nx = -uy, ny = ux, along = 0;
+  for (int ch = 0; ch < 3; ++ch) along += s.grad_x[ch] * nx + s.grad_y[ch] * ny;
+  if (along == 0.f) {
+    const float mx = 0.5f * (s.x0 + s.x1), my = 0.5f * (s.y0 + s.y1);
+    const auto at = [&](float t) {
+      const int x = std::clamp(static_cast<int>(std::lround(mx + t * nx)), 0, bgr.cols - 1);
+      const int y = std::clamp(static_cast<int>(std::lround(my + t * ny)), 0, bgr.rows - 1);
+      return brightness(bgr.ptr<std::uint8_t>(y) + 3 * x);
+    };
+    along = at(1.5f) - at(-1.5f);
+  }
+  return along < 0 ? std::array{-nx, -ny} : std::array{nx, ny};
+}
 
 // The median of the first n values (reordered).
 inline float median(std::array<float, 32>& v, int n) {

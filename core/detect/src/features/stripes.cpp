@@ -306,20 +306,8 @@ bool measure_candidate(const cv::Mat& bgr, const FieldPixel& pixel, const Segmen
   if (!(len > 0.f)) return false;
   c.ux = dx / len, c.uy = dy / len;
   const bool thin_when_level = level(len, c.uy);
-  // The paint is on the side the colour gradient points to (brighter along it); the image
-  // decides when the gradients say nothing (a caller's own segments).
-  float nx = -c.uy, ny = c.ux, along = 0;
-  for (int ch = 0; ch < 3; ++ch) along += s.grad_x[ch] * nx + s.grad_y[ch] * ny;
-  if (along == 0.f) {
-    const float mx = 0.5f * (s.x0 + s.x1), my = 0.5f * (s.y0 + s.y1);
-    const auto at = [&](float t) {
-      const int x = std::clamp(static_cast<int>(std::lround(mx + t * nx)), 0, bgr.cols - 1);
-      const int y = std::clamp(static_cast<int>(std::lround(my + t * ny)), 0, bgr.rows - 1);
-      return brightness(bgr.ptr<std::uint8_t>(y) + 3 * x);
-    };
-    along = at(1.5f) - at(-1.5f);
-  }
-  if (along < 0) nx = -nx, ny = -ny;
+  // The paint is on the side the colour gradient points to (brighter along it).
+  const auto [nx, ny] = bright_side(bgr, s, c.ux, c.uy);
   c.sx = nx, c.sy = ny;
   const int samples = std::clamp(params.stripe_samples, 1, 32);
   // Index 0: the profiles `thin` takes; 1: those ThinLines::Level takes.
