@@ -7,8 +7,10 @@
 # detector_calibration.hpp), with its recall ceiling (every segment called a marking: the share
 # of line edges on any segment); that file with the stripes' turf in the field colour alone
 # rather than the frame's turf colours (turf_colours.hpp) and with the coarse pass (coarse_scale 2 and 3 from half the height down).
-# Columns: marking P and R, the ceiling, the share of hand-drawn field-boundary columns within
-# 4 px. Prints Markdown. Overlays of the scored frames go to
+# Columns: marking P and R (segments, each of a line's two edges), the ceiling, the share of
+# hand-drawn field-boundary columns within 4 px, the stripes' centre lines P / R against the
+# drawn lines' centres (one per line: what the robot takes; fieldlines eval --hand). Prints
+# Markdown. Overlays of the scored frames go to
 # OUT_DIR/overlays/<venue>/{built-in,calibrated}/ (not into docs/: they are the shared data's
 # images).
 #   usage: bash scripts/venue_calibration.sh [OUT_DIR]   (default build/venue-calibration)
@@ -36,17 +38,17 @@ PY
 row() {
   local label=$1 th=$2 says=${3:-} ceiling=$out/ceiling
   if [[ -f "$th-0.json" ]]; then per_half everything "$th" "$ceiling"; else everything "$th" "$ceiling.json"; ceiling=$ceiling.json; fi
-  echo "| | | $label | $(score "$id" "$th") | $(score "$id" "$ceiling" | cut -d'|' -f2 | tr -d ' ') | $(score "$id" "$th" boundary) | $says |"
+  echo "| | | $label | $(score "$id" "$th") | $(score "$id" "$ceiling" | cut -d'|' -f2 | tr -d ' ') | $(score "$id" "$th" boundary) | $(score "$id" "$th" centre) | $says |"
 }
-echo "| venue | frames per half / scored | thresholds | marking P | marking R | on any segment | boundary within 4 px | calibration says |"
-echo "|---|---|---|---:|---:|---:|---:|---|"
+echo "| venue | frames per half / scored | thresholds | marking P | marking R | on any segment | boundary within 4 px | stripes' centre lines P / R | calibration says |"
+echo "|---|---|---|---:|---:|---:|---:|---:|---|"
 venue_rows() {
   local frames scored k
   frames=$(( $(ls "$out/$id-fit0" | wc -l) )) scored=$(( $(ls "$out/$id-truth0" "$out/$id-truth1" | grep -c json) ))
-  echo "| $title | $frames + $(ls "$out/$id-fit1" | wc -l) / $scored | | | | | | |"
+  echo "| $title | $frames + $(ls "$out/$id-fit1" | wc -l) / $scored | | | | | | | |"
   row "built-in" assets/default_thresholds.json
   if ! calibrate_halves "$id" "$out/$id"; then
-    echo "| | | calibrated | | | | | refused: $(sed 's/^fieldlines calibrate: error: //' "$out/$id"-*.err | tr '\n' ' ') |"
+    echo "| | | calibrated | | | | | | refused: $(sed 's/^fieldlines calibrate: error: //' "$out/$id"-*.err | tr '\n' ' ') |"
     return
   fi
   says=$(python3 -c "
@@ -69,7 +71,7 @@ print('; '.join(parts))")
     "$bin" detect --quiet --thresholds "$out/$id-$k.json" --draw "$out/overlays/$id/calibrated" "${images[@]}"
   done
 }
-each_venue venue_rows 8
+each_venue venue_rows 9
 
 echo
 echo "Synthetic Kid field, one light at a time: calibrated on 20 frames of one light (seed 1), scored"

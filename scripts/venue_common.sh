@@ -71,7 +71,8 @@ per_half() {
 # VENUE THRESHOLDS [WHAT] -> the venue's figures pooled over both halves: THRESHOLDS is a file
 # (the same for both) or a PREFIX of per-half files. WHAT: "marking" (default) -> "P | R" of the
 # markings, "boundary" -> the share of hand-drawn field-boundary columns the detected boundary
-# lies within 4 px of.
+# lies within 4 px of, "centre" -> "P / R" of the stripes' centre lines against the drawn lines'
+# centres ("-" without stripes).
 score() {
   local id=$1 th=$2 what=${3:-marking} k file
   for k in 0 1; do
@@ -86,6 +87,11 @@ totals = [json.load(open(p))["total"] for p in sys.argv[2:] if os.path.exists(p)
 if sys.argv[1] == "boundary":
     n = sum(t["hand_field_boundary"]["columns"] for t in totals)
     print("%.3f" % (sum(t["hand_field_boundary"]["within_4px"] for t in totals) / n) if n else "-")
+elif sys.argv[1] == "centre":
+    c = [t["centre_lines"] for t in totals]
+    detected, truth = sum(x["detected_px"] for x in c), sum(x["truth_px"] for x in c)
+    print("%.3f / %.3f" % (sum(x["on_line_px"] for x in c) / detected, sum(x["covered_px"] for x in c) / truth)
+          if detected and truth else "-")
 else:
     m = [t["marking"] for t in totals]
     predicted, visible = sum(x["predicted"] for x in m), sum(x["visible_px"] for x in m)

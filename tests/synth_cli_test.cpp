@@ -157,6 +157,12 @@ TEST_F(SynthCli, EvalHandScoresTheFieldBoundaryAgainstTheDrawnOne) {
   EXPECT_EQ(score["columns"], 300);
   EXPECT_EQ(score["within_2pct_height"], 200) << eval.out;
   EXPECT_LE(score["median_error_px"].get<double>(), 2.4) << eval.out;
+  // The stripes' centre lines against the drawn centres: 180 px drawn per frame; the built-in
+  // thresholds keep the stripes off, so none found.
+  EXPECT_NE(eval.out.find("centre R"), std::string::npos) << eval.out;
+  const auto centre = nlohmann::json::parse(slurp(dir_ / "s.json"))["total"]["centre_lines"];
+  EXPECT_NEAR(centre["truth_px"].get<double>(), 360, 1e-3);
+  EXPECT_EQ(centre["detected_px"].get<double>(), 0);
 }
 
 // eval --gt --truth-camera gives the detector each frame's camera: on Kid frames of a held-out

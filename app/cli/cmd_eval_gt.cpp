@@ -23,6 +23,7 @@
 #include "fieldlines/synth/field.hpp"
 #include "fieldlines/synth/ground_score.hpp"
 #include "fieldlines/synth/gt_eval.hpp"
+#include "fieldlines/synth/centre_line_score.hpp"
 #include "fieldlines/synth/hand_truth.hpp"
 #include "fieldlines/data/image_io.hpp"
 #include "fieldlines/synth/synth.hpp"
@@ -45,7 +46,11 @@ truth, per scene and lighting condition and pooled. With --hand, the images are 
 under DATA and their truth is drawn by hand (DIR/<name>.json, schema fieldlines-hand-truth, as
 in tests/data/hand_truth); the rows are the folders, and a second table scores the detected
 field boundary against the drawn one on the columns it spans (within 4 px, within 2 % of the
-frame's height, median error; a frame where no field was found counts its height). Scores:
+frame's height, median error; a frame where no field was found counts its height) and the
+stripes' centre lines (what the robot takes from the stripes stage) against the drawn lines'
+centres: precision, the share of their length within half the line's width + 1 px of a drawn
+line's centre (parallel within 10 degrees); recall, the share of the drawn lines' visible
+centre-line length so near a stripe's. Scores:
   precision  predicted segments of a class whose truth label agrees (a segment's truth label is
              the class whose line edges it follows for >= 60% of its length, within 2.5 px and
              10 degrees; otherwise none)
@@ -119,6 +124,7 @@ struct Group {
   synth::FeatureScore features;
   synth::GroundScore ground;  // with --truth-camera and the features
   HandBoundary hand_boundary;
+  synth::CentreLineScore centre_lines;
   double detect_ms = 0;
 };
 
@@ -198,10 +204,14 @@ void print_hand_boundary_row(bool markdown, const std::string& folder, const Gro
   const long within_px = within_boundary_px(b);
   const std::string w4 = fmt(n > 0 ? double(within_px) / n : 0, n > 0),
                     ws = fmt(n > 0 ? double(b.within_share) / n : 0, n > 0), med = fmt(median(b.errors_px), n > 0);
+  const synth::CentreLineScore& c = g.centre_lines;
+  const std::string cp = fmt(c.precision(), c.detected_px > 0), cr = fmt(c.recall(), c.truth_px > 0);
   if (markdown)
-    std::printf("| %s | %d | %ld | %s | %s | %s |\n", folder.c_str(), g.score.images, n, w4.c_str(), ws.c_str(), med.c_str());
+    std::printf("| %s | %d | %ld | %s | %s | %s | %s | %s |\n", folder.c_str(), g.score.images, n, w4.c_str(), ws.c_str(),
+                med.c_str(), cp.c_str(), cr.c_str());
   else
-    std::printf("%-12s %6d %8ld %10s %10s %10s\n", folder.c_str(), g.score.images, n, w4.c_str(), ws.c_str(), med.c_str());
+    std::printf("%-12s %6d %8ld %10s %10s %10s %9s %9s\n", folder.c_str(), g.score.images, n, w4.c_str(), ws.c_str(),
+                med.c_str(), cp.c_str(), cr.c_str());
 }
 
 nlohmann::json to_json(const Group& g) {
@@ -233,7 +243,10 @@ nlohmann::json to_json(const Group& g) {
           {"hand_field_boundary", {{"columns", g.hand_boundary.errors_px.size()},
                                    {"within_2pct_height", g.hand_boundary.within_share},
                                    {"within_4px", within_boundary_px(g.hand_boundary)},
-                                   {"median_error_px", median(g.hand_boundary.errors_px)}}}};
+                                   {"median_error_px", median(g.hand_boundary.errors_px)}}},
+          {"centre_lines", {{"truth_px", g.centre_lines.truth_px}, {"covered_px", g.centre_lines.covered_px},
+                            {"recall", g.centre_lines.recall()}, {"detected_px", g.centre_lines.detected_px},
+                            {"on_line_px", g.centre_lines.on_line_px}, {"precision", g.centre_lines.precision()}}}};
 }
 
 }  // namespace
@@ -381,10 +394,11 @@ int cmd_eval_gt(const Args& args) {
                                              synth::to_ground_camera(item.truth.intrinsics, item.truth.pose));
       }
       const HandBoundary hand_boundary = score_hand_boundary(item.boundary_rows, detector.field_boundary(), img.rows);
+      const synth::CentreLineScore centre_lines = synth::score_centre_lines(item.truth, detector.features().markings, match);
       Group& g = groups[{item.row, item.condition}];
       for (Group* to : {&g, &total}) {
         to->score += score, to->features += feature_score, to->ground += ground_score;
-        to->hand_boundary += hand_boundary, to->detect_ms += ms;
+        to->hand_boundary += hand_boundary, to->centre_lines += centre_lines, to->detect_ms += ms;
       }
     } catch (const Error& e) {
       std::fprintf(stderr, "fieldlines eval: %s\n", e.what());
@@ -436,11 +450,11 @@ int cmd_eval_gt(const Args& args) {
   if (hand) {
     std::printf("\n");
     if (markdown)
-      std::printf("| folder | images | boundary columns | within 4 px | within 2 %% of height | median error px |\n"
-                  "|---|---|---|---|---|---|\n");
+      std::printf("| folder | images | boundary columns | within 4 px | within 2 %% of height | median error px | "
+                  "centre lines P | centre lines R |\n|---|---|---|---|---|---|---|---|\n");
     else
-      std::printf("%-12s %6s %8s %10s %10s %10s\n", "folder", "images", "columns", "within 4px", "within 2%",
-                  "median px");
+      std::printf("%-12s %6s %8s %10s %10s %10s %9s %9s\n", "folder", "images", "columns", "within 4px", "within 2%",
+                  "median px", "centre P", "centre R");
     for (const auto& [key, g] : groups) print_hand_boundary_row(markdown, key.first, g);
     print_hand_boundary_row(markdown, "all", total);
   }
