@@ -17,8 +17,9 @@ using Candidate = StripeWorkspace::Candidate;
 using namespace paint;
 
 // Between paint and turf only blur (paint::kMaxBlurPx), none darker than this share of the turf
-// on its side (of the field colour where that turf is brighter): a lens's colour fringe along a wide line (blue or yellow, 0.75 to 0.85 of the turf)
-// is blur; a robot's dark body (0.3 to 0.5) is not. Held-out MSL venues, calibrated: recall 0.730
+// on its side (of the field colour where that turf is brighter): a lens's colour fringe along a
+// wide line (blue or yellow, 0.75 to 0.85 of the turf) is blur; a robot's dark body (0.3 to 0.5)
+// is not. Held-out MSL venues, calibrated: recall 0.730
 // -> 0.757 (De Locht), 0.578 -> 0.610 (Bangkok), 0.729 -> 0.739 (Bordeaux) against 0.85, no
 // precision lost; Humanoid and SSL unchanged. Against the turf's own brightness instead of the
 // field colour's alone (a vignetted corner): Bangkok 0.981 / 0.643 -> 0.983 / 0.676, Humanoid's
