@@ -62,17 +62,24 @@ Segment row_edge(float y, bool paint_below) {
   return {.x0 = 60, .y0 = y, .x1 = 580, .y1 = y, .grad_y = {g, g, g}, .label = Label::Marking};
 }
 
+// The labels find_stripes leaves on `edges`, and the markings it writes into `markings` when given.
+std::vector<Label> labels_of(const cv::Mat& frame, const FieldColours& field, std::vector<Segment> edges,
+                             const FieldBoundary* on_field = nullptr, std::vector<Marking>* markings = nullptr) {
+  StripeWorkspace work;
+  std::vector<Marking> out;
+  find_stripes(frame, field, edges, stripes_on(), work, out, ThinLines::Level, Shape::Any, on_field);
+  if (markings) *markings = out;
+  std::vector<Label> labels;
+  for (const Segment& s : edges) labels.push_back(s.label);
+  return labels;
+}
+
 // The labels find_stripes leaves on row_edge()s, one per (row, paint below it).
 std::vector<Label> stripe_labels(const cv::Mat& frame, const FieldColours& field,
                                  const std::vector<std::pair<float, bool>>& rows, const FieldBoundary* on_field = nullptr) {
   std::vector<Segment> edges;
   for (const auto& [y, paint_below] : rows) edges.push_back(row_edge(y, paint_below));
-  StripeWorkspace work;
-  std::vector<Marking> out;
-  find_stripes(frame, field, edges, stripes_on(), work, out, ThinLines::Level, Shape::Any, on_field);
-  std::vector<Label> labels;
-  for (const Segment& s : edges) labels.push_back(s.label);
-  return labels;
+  return labels_of(frame, field, std::move(edges), on_field);
 }
 
 void expect_centre_line(const Marking& m, cv::Point2f a, cv::Point2f b, float width) {
@@ -503,16 +510,13 @@ TEST(Stripes, ALineAlongTheFieldsEdgeIsAMarking) {
   FieldBoundary boundary;
   boundary.image_height = 480;
   boundary.points = {{0, 200}, {639, 200}};
-  // The labels find_stripes leaves on the surround's edge (labelled `label`), and its markings.
+  // The label find_stripes leaves on the surround's edge (labelled `label`), and its markings.
   const auto edge_after = [&](const cv::Mat& frame, Label label, const FieldBoundary* on_field) {
     Segment edge = row_edge(199.5f, true);
     edge.label = label;
-    std::vector<Segment> segments{edge};
-    StripeWorkspace work;
     std::vector<Marking> out;
-    find_stripes(frame, estimate_field_colour(frame), segments, stripes_on(), work, out, ThinLines::Level,
-                 Shape::Any, on_field);
-    return std::pair{segments[0].label, out};
+    const Label after = labels_of(frame, estimate_field_colour(frame), {edge}, on_field, &out).front();
+    return std::pair{after, out};
   };
   const cv::Mat line = frame_with(200, 2);
   const auto [label, markings] = edge_after(line, Label::None, &boundary);

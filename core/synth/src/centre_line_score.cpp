@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "segment_distance.hpp"
+
 namespace fieldlines::synth {
 namespace {
 
@@ -12,16 +14,6 @@ struct Piece {
   float ax, ay, bx, by, wa, wb;
   bool visible;
 };
-
-// The nearest point of segment a-b to p: its parameter in [0, 1] and distance.
-struct Nearest {
-  float t, distance;
-};
-Nearest nearest(float px, float py, float ax, float ay, float bx, float by) {
-  const float dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
-  const float t = len2 > 1e-12f ? std::clamp(((px - ax) * dx + (py - ay) * dy) / len2, 0.0f, 1.0f) : 0.0f;
-  return {t, std::hypot(px - (ax + t * dx), py - (ay + t * dy))};
-}
 
 bool parallel(float ax, float ay, float bx, float by, float cx, float cy, float dx, float dy, float cos_max) {
   const float ux = bx - ax, uy = by - ay, vx = dx - cx, vy = dy - cy;
@@ -64,12 +56,12 @@ CentreLineScore score_centre_lines(const GroundTruth& truth, std::span<const Mar
   for (const Piece& piece : pieces) {
     if (!piece.visible) continue;
     along(piece.ax, piece.ay, piece.bx, piece.by, [&](float x, float y, float step) {
-      const float t = nearest(x, y, piece.ax, piece.ay, piece.bx, piece.by).t;
+      const float t = nearest_on_piece(x, y, piece.ax, piece.ay, piece.bx, piece.by).t;
       const float reach = 0.5f * (piece.wa + t * (piece.wb - piece.wa)) + margin_px;
       out.truth_px += step;
       const bool near = std::any_of(markings.begin(), markings.end(), [&](const Marking& m) {
         return parallel(piece.ax, piece.ay, piece.bx, piece.by, m.x0, m.y0, m.x1, m.y1, cos_max) &&
-               nearest(x, y, m.x0, m.y0, m.x1, m.y1).distance <= reach;
+               nearest_on_piece(x, y, m.x0, m.y0, m.x1, m.y1).distance <= reach;
       });
       if (near) out.covered_px += step;
     });
@@ -79,7 +71,7 @@ CentreLineScore score_centre_lines(const GroundTruth& truth, std::span<const Mar
       out.detected_px += step;
       const bool on = std::any_of(pieces.begin(), pieces.end(), [&](const Piece& piece) {
         if (!parallel(piece.ax, piece.ay, piece.bx, piece.by, m.x0, m.y0, m.x1, m.y1, cos_max)) return false;
-        const Nearest n = nearest(x, y, piece.ax, piece.ay, piece.bx, piece.by);
+        const Nearest n = nearest_on_piece(x, y, piece.ax, piece.ay, piece.bx, piece.by);
         return n.distance <= 0.5f * (piece.wa + n.t * (piece.wb - piece.wa)) + margin_px;
       });
       if (on) out.on_line_px += step;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fieldlines/detect/error.hpp"
+#include "segment_distance.hpp"
 
 namespace fieldlines {
 namespace {
@@ -18,10 +19,7 @@ Unit direction(float ax, float ay, float bx, float by) {
 }
 
 float distance_to_piece(float px, float py, const GtEdges::Edge& e) {
-  const float dx = e.bx - e.ax, dy = e.by - e.ay;
-  const float len2 = dx * dx + dy * dy;
-  const float t = len2 > 1e-12f ? std::clamp(((px - e.ax) * dx + (py - e.ay) * dy) / len2, 0.0f, 1.0f) : 0.0f;
-  return std::hypot(px - (e.ax + t * dx), py - (e.ay + t * dy));
+  return synth::nearest_on_piece(px, py, e.ax, e.ay, e.bx, e.by).distance;
 }
 
 float distance_to_segment(float px, float py, const Segment& s) {

@@ -69,8 +69,7 @@ std::optional<EdgePaint> edge_paint(const cv::Mat& bgr, const FieldPixel& pixel,
   int lo = peak, hi = peak;
   while (lo - 1 > outside && v(lo - 1) >= level) --lo;
   while (hi + 1 < turf && v(hi + 1) >= level) ++hi;
-  const float near_edge = float(lo) - (v(lo) - level) / std::max(v(lo) - v(lo - 1), 1.f);
-  const float far_edge = float(hi) + (v(hi) - level) / std::max(v(hi) - v(hi + 1), 1.f);
+  const float near_edge = crossing(b, lo - 1, level), far_edge = crossing(b, hi, level);
   if (lo - outside > kEdgeFadePx || std::abs(near_edge - float(kBack)) > kEdgeFadePx) return std::nullopt;
   const float width = far_edge - near_edge;
   if (width < kMinWidthPx || width > max_width) return std::nullopt;

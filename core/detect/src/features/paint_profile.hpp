@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <span>
 
 #include <opencv2/core/mat.hpp>
 
@@ -32,6 +33,13 @@ inline float greyness_distance(const std::uint8_t* p) {
 inline bool blended_paint(const std::uint8_t* peak, const std::uint8_t* turf) {
   const float ratio = std::min(1.f, brightness(turf) / std::max(brightness(peak), 1.f));
   return greyness_distance(peak) <= 0.5f * (1 + ratio) * greyness_distance(turf);
+}
+
+// Where between steps i and i + 1 of a profile's brightness `b` it crosses `level`, in steps.
+inline float crossing(std::span<const float> b, int i, float level) {
+  const auto at = [&](int k) { return b[static_cast<std::size_t>(k)]; };
+  const float d = at(i + 1) - at(i);
+  return d != 0.f ? float(i) + (level - at(i)) / d : float(i) + 0.5f;
 }
 
 // The height the largest plausible width scales with at row `y` (stripes.hpp): the frame's own

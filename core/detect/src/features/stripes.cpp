@@ -82,12 +82,6 @@ bool same_turf(const std::uint8_t* a, const std::uint8_t* b) {
   return std::abs(a[2] / sa - b[2] / sb) + std::abs(a[1] / sa - b[1] / sb) <= FieldBoundaryParams{}.chroma_tolerance;
 }
 
-// Where between steps i and i + 1 the brightness crosses `level`, in steps.
-float crossing(const std::vector<float>& b, int i, float level) {
-  const float d = b[i + 1] - b[i];
-  return d != 0.f ? float(i) + (level - b[i]) / d : float(i) + 0.5f;
-}
-
 // One profile from (px, py) along the unit vector (sx, sy) towards the paint. Step i reads the
 // pixel nearest to (px, py) + (i - back) (sx, sy), back = kOuterPx + kMaxBlurPx; the profile
 // ends at the image border.
@@ -508,15 +502,14 @@ void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segm
       }
       work.candidates.push_back(c);
     }
-    // Lines along the field's edge: segments the colours left as none (edge_lines.hpp).
+    // Lines along the field's edge: segments the colours left as none (edge_lines.hpp); the
+    // candidates become markings in pair_stripes.
     if (on_field && !on_field->empty())
       for (std::size_t i = 0; i < segments.size(); ++i) {
         if (segments[i].label != Label::None || place_of(segments[i], *on_field) != BoundaryPlace::Along) continue;
         Candidate c;
         c.segment = i;
-        if (!edge_line(bgr8, pixel, segments[i], params, c)) continue;
-        segments[i].label = Label::Marking;  // pair_stripes keeps what is among the candidates
-        work.candidates.push_back(c);
+        if (edge_line(bgr8, pixel, segments[i], params, c)) work.candidates.push_back(c);
       }
   }
   pair_stripes(segments, work.candidates, params, out);
