@@ -132,6 +132,40 @@ TEST(FieldBoundary, ARobotsSlopingShoulderAtTheSideIsNoFieldCorner) {
   EXPECT_NEAR(b.y_at(0), horizon(96), 6) << "level with the first column seen, not down the shoulder";
 }
 
+// A gentler shoulder, 0.7 rows per column (MSL Bordeaux `_104852`), is a shoulder too when it
+// falls by more than the gap; a field's edge whose last columns at the frame's side fall as
+// steeply, by less than the gap (a synthetic field's far edge at a frame's corner), is kept.
+TEST(FieldBoundary, AGentleShoulderFallsFurtherThanAFieldsEdge) {
+  cv::Mat img = field_frame();
+  const std::vector<cv::Point> shoulder{{0, 60}, {90, 60}, {90, 102}, {0, 165}};
+  cv::fillConvexPoly(img, shoulder, cv::Scalar(15, 15, 15));
+  img = fl::test::noisy(img);
+  fl::FieldBoundary b;
+  fl::find_field_boundary(img, b);
+  ASSERT_FALSE(b.empty());
+  EXPECT_NEAR(b.y_at(0), horizon(96), 6) << "level with the first column seen, not down the shoulder";
+  fl::FieldBoundaryParams no_shoulders;
+  no_shoulders.shoulder_fall = 100;
+  fl::find_field_boundary(img, b, no_shoulders);
+  EXPECT_GT(b.y_at(0), horizon(96) + 30) << "dropping only ends steeper than 0.75 follows the shoulder down";
+
+  // The far edge falls by 25 px over the last 40 columns on the right, less than the gap (29 px).
+  // Rows sampled one by one: with the default two, an 8-column piece's slope is a multiple of 0.25.
+  cv::Mat edge = field_frame();
+  const std::vector<cv::Point> corner{{600, 100}, {639, 100}, {639, 163}, {600, 138}};
+  cv::fillConvexPoly(edge, corner, cv::Scalar(120, 120, 120));
+  edge = fl::test::noisy(edge);
+  fl::FieldBoundaryParams fine;
+  fine.row_step = 1;
+  fl::find_field_boundary(edge, b, fine);
+  ASSERT_FALSE(b.empty());
+  EXPECT_GT(b.y_at(636), 155) << "the field's edge falling at the side is kept";
+  fl::FieldBoundaryParams any_fall = fine;
+  any_fall.shoulder_fall = 0;
+  fl::find_field_boundary(edge, b, any_fall);
+  EXPECT_LT(b.y_at(636), 154) << "dropping every end steeper than 0.6 cuts the field's edge";
+}
+
 // A dark wall along the field, shorter than the gap a ball may leave, with a green curtain 40 px
 // tall above it (the authors' SSL lab): the curtain is not the field, although the
 // scan crosses the wall to reach it; field less than twice the wall's length above a band that
@@ -283,7 +317,7 @@ TEST(FieldBoundary, SunAndShadeOnTheFieldKeepTheBoundaryAtItsEdge) {
   turf.measure(img, *field);
   // Every hull end kept as it falls: the turf colours alone hold the sunlit side up.
   fl::FieldBoundaryParams keep_ends;
-  keep_ends.max_end_slope = 1000;
+  keep_ends.max_end_slope = keep_ends.shoulder_slope = 1000;
   fl::FieldBoundary one_colour, turf_colours;
   fl::find_field_boundary(img, *field, one_colour, keep_ends);
   fl::find_field_boundary(img, *field, turf_colours, keep_ends, &turf);

@@ -21,7 +21,7 @@ double cross(const Point& o, const Point& a, const Point& b) {
 
 // `out.points` from `out.columns`: their tops median-filtered, the upper hull over them, its
 // steep ends dropped.
-void hull_of_columns(FieldBoundary& out, const FieldBoundaryParams& params) {
+void hull_of_columns(FieldBoundary& out, const FieldBoundaryParams& params, float fall) {
   out.points.clear();
   // Median of each column's top with its neighbours (a fixed window: no allocation). The
   // filtered tops go into `points` first, then the hull is built in place over them.
@@ -44,14 +44,27 @@ void hull_of_columns(FieldBoundary& out, const FieldBoundaryParams& params) {
   }
   out.points.resize(kept);
   // Steep ends fall to an occluder or unrecognised turf at the side, not to the field's edge.
-  const auto steep = [&](const Point& end, const Point& inner) {
-    return end.y > inner.y && end.y - inner.y > params.max_end_slope * std::abs(end.x - inner.x);
+  const auto steeper = [](const Point& end, const Point& inner, float slope) {
+    return end.y > inner.y && end.y - inner.y > slope * std::abs(end.x - inner.x);
   };
-  std::size_t first = 0, last = out.points.size();
-  while (last - first > 2 && steep(out.points[first], out.points[first + 1])) ++first;
-  while (last - first > 2 && steep(out.points[last - 1], out.points[last - 2])) --last;
-  if (first > 0) std::copy(out.points.begin() + static_cast<long>(first), out.points.begin() + static_cast<long>(last), out.points.begin());
-  out.points.resize(last - first);
+  const auto at = [&](int i) -> const Point& { return out.points[static_cast<std::size_t>(i)]; };
+  int lo = 0, hi = static_cast<int>(kept) - 1;  // the points kept
+  // From end `e` inwards (`dir` +1 from the left, -1 from the right) past the pieces steeper than
+  // `slope`, keeping at least two points.
+  const auto inwards = [&](int e, int dir, float slope) {
+    int i = e;
+    while (hi - lo - std::abs(i - e) >= 2 && steeper(at(i), at(i + dir), slope)) i += dir;
+    return i;
+  };
+  for (const int dir : {1, -1}) {
+    int& e = dir > 0 ? lo : hi;
+    // A shoulder: pieces steeper than `shoulder_slope` that together fall by at least `fall`
+    // px. A field's edge falls as steeply only for a few columns at the frame's side.
+    if (const int i = inwards(e, dir, params.shoulder_slope); at(e).y - at(i).y >= fall) e = i;
+    e = inwards(e, dir, params.max_end_slope);
+  }
+  if (lo > 0) std::copy(out.points.begin() + lo, out.points.begin() + hi + 1, out.points.begin());
+  out.points.resize(static_cast<std::size_t>(hi - lo + 1));
 }
 
 // The column's top, settled: scanning down from `top`, each field sample weighs +1 and a band
@@ -225,7 +238,7 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
     out.scan_ends.push_back(s.stop);
   }
   if (out.columns.size() < std::max<std::size_t>(2, static_cast<std::size_t>(params.min_columns * scanned))) return;
-  hull_of_columns(out, params);
+  hull_of_columns(out, params, float(gap) * params.shoulder_fall);
   if (!(params.past_occluder_run > 0)) return;
   // Turf past an occluder: a column whose scan ended at a robot standing on the field, with the
   // field's turf above it, takes the top of that turf when it is at least `past_occluder_run`
@@ -253,7 +266,7 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
       from = past.stop;  // a few greenish samples on the occluder itself: look on above
     }
   }
-  if (raised) hull_of_columns(out, params);
+  if (raised) hull_of_columns(out, params, float(gap) * params.shoulder_fall);
 }
 
 }  // namespace fieldlines
