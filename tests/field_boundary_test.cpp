@@ -120,11 +120,19 @@ TEST(FieldBoundary, ARobotReachingTheFramesTopEndsTheLookPastIt) {
 // A robot's sloping shoulder at the frame's left side (MSL Bordeaux, fisheye): it hides the
 // far edge down a slope of 0.9 rows per column, gentler than a wall's side but steeper than a
 // field's corner falls away. Its hull end is dropped and the boundary held level.
-TEST(FieldBoundary, ARobotsSlopingShoulderAtTheSideIsNoFieldCorner) {
+namespace {
+// The carpet with a robot's dark shoulder over its left 90 columns, falling from row 102 at
+// column 90 to row `bottom` at the frame's side (noise added).
+cv::Mat with_shoulder(int bottom) {
   cv::Mat img = field_frame();
-  const std::vector<cv::Point> shoulder{{0, 60}, {90, 60}, {90, 102}, {0, 183}};
+  const std::vector<cv::Point> shoulder{{0, 60}, {90, 60}, {90, 102}, {0, bottom}};
   cv::fillConvexPoly(img, shoulder, cv::Scalar(15, 15, 15));
-  img = fl::test::noisy(img);
+  return fl::test::noisy(img);
+}
+}  // namespace
+
+TEST(FieldBoundary, ARobotsSlopingShoulderAtTheSideIsNoFieldCorner) {
+  const cv::Mat img = with_shoulder(183);
   fl::FieldBoundary b;
   fl::find_field_boundary(img, b);
   ASSERT_FALSE(b.empty());
@@ -136,10 +144,7 @@ TEST(FieldBoundary, ARobotsSlopingShoulderAtTheSideIsNoFieldCorner) {
 // falls by more than the gap; a field's edge whose last columns at the frame's side fall as
 // steeply, by less than the gap (a synthetic field's far edge at a frame's corner), is kept.
 TEST(FieldBoundary, AGentleShoulderFallsFurtherThanAFieldsEdge) {
-  cv::Mat img = field_frame();
-  const std::vector<cv::Point> shoulder{{0, 60}, {90, 60}, {90, 102}, {0, 165}};
-  cv::fillConvexPoly(img, shoulder, cv::Scalar(15, 15, 15));
-  img = fl::test::noisy(img);
+  const cv::Mat img = with_shoulder(165);
   fl::FieldBoundary b;
   fl::find_field_boundary(img, b);
   ASSERT_FALSE(b.empty());
