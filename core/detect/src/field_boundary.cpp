@@ -238,7 +238,8 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
     out.scan_ends.push_back(s.stop);
   }
   if (out.columns.size() < std::max<std::size_t>(2, static_cast<std::size_t>(params.min_columns * scanned))) return;
-  hull_of_columns(out, params, float(gap) * params.shoulder_fall);
+  const float shoulder_fall_px = float(gap) * params.shoulder_fall;
+  hull_of_columns(out, params, shoulder_fall_px);
   if (!(params.past_occluder_run > 0)) return;
   // Turf past an occluder: a column whose scan ended at a robot standing on the field, with the
   // field's turf above it, takes the top of that turf when it is at least `past_occluder_run`
@@ -266,7 +267,7 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
       from = past.stop;  // a few greenish samples on the occluder itself: look on above
     }
   }
-  if (raised) hull_of_columns(out, params, float(gap) * params.shoulder_fall);
+  if (raised) hull_of_columns(out, params, shoulder_fall_px);
 }
 
 }  // namespace fieldlines

@@ -9,14 +9,8 @@
 namespace fieldlines {
 namespace {
 
-struct Unit {
-  float x, y;
-};
-
-Unit direction(float ax, float ay, float bx, float by) {
-  const float dx = bx - ax, dy = by - ay, len = std::hypot(dx, dy);
-  return len > 1e-9f ? Unit{dx / len, dy / len} : Unit{1, 0};
-}
+using synth::direction;
+using synth::Unit;
 
 float distance_to_piece(float px, float py, const GtEdges::Edge& e) {
   return synth::nearest_on_piece(px, py, e.ax, e.ay, e.bx, e.by).distance;
@@ -73,7 +67,7 @@ Label GtEdges::truth_label(const Segment& s) const {
   const float len = std::hypot(s.x1 - s.x0, s.y1 - s.y0);
   const int n = std::max(2, static_cast<int>(std::ceil(len)) + 1);
   const Unit ds = direction(s.x0, s.y0, s.x1, s.y1);
-  const float cos_max = std::cos(params_.max_angle_deg * 3.14159265f / 180.0f);
+  const float cos_max = synth::cos_of_degrees(params_.max_angle_deg);
   // Edges parallel to the segment and near its bounding box: the only candidates.
   std::vector<const Edge*> near;
   const float pad = params_.max_distance_px;
@@ -83,8 +77,7 @@ Label GtEdges::truth_label(const Segment& s) const {
     if (std::max(e.ax, e.bx) < x0 || std::min(e.ax, e.bx) > x1 || std::max(e.ay, e.by) < y0 ||
         std::min(e.ay, e.by) > y1)
       continue;
-    const Unit de = direction(e.ax, e.ay, e.bx, e.by);
-    if (std::abs(de.x * ds.x + de.y * ds.y) < cos_max) continue;
+    if (!synth::parallel(direction(e.ax, e.ay, e.bx, e.by), ds, cos_max)) continue;
     near.push_back(&e);
   }
   if (near.empty()) return Label::None;
@@ -132,7 +125,7 @@ GtScore GtEdges::score(std::span<const Segment> detected) const {
         break;
     }
   }
-  const float cos_max = std::cos(params_.max_angle_deg * 3.14159265f / 180.0f);
+  const float cos_max = synth::cos_of_degrees(params_.max_angle_deg);
   for (const Edge& e : edges_) {
     if (!e.visible) continue;
     GtClassScore& cls = e.label == Label::Marking ? out.marking : out.boundary;
@@ -145,21 +138,14 @@ GtScore GtEdges::score(std::span<const Segment> detected) const {
     for (std::size_t k = 0; k < detected.size(); ++k) {
       const Segment& s = detected[k];
       if (s.label != e.label || truths[k] != e.label) continue;
-      const Unit ds = direction(s.x0, s.y0, s.x1, s.y1);
-      if (std::abs(de.x * ds.x + de.y * ds.y) >= cos_max) parallel.push_back(&s);
+      if (synth::parallel(de, direction(s.x0, s.y0, s.x1, s.y1), cos_max)) parallel.push_back(&s);
     }
     if (parallel.empty()) continue;
-    const int n = std::max(1, static_cast<int>(std::ceil(len)));
-    const float step = len / static_cast<float>(n);
-    for (int i = 0; i < n; ++i) {  // sub-interval midpoints
-      const float t = (static_cast<float>(i) + 0.5f) / static_cast<float>(n);
-      const float px = e.ax + t * (e.bx - e.ax), py = e.ay + t * (e.by - e.ay);
-      for (const Segment* s : parallel)
-        if (distance_to_segment(px, py, *s) <= params_.max_distance_px) {
-          cls.covered_px += step;
-          break;
-        }
-    }
+    synth::along(e.ax, e.ay, e.bx, e.by, [&](float px, float py, float step) {
+      if (std::any_of(parallel.begin(), parallel.end(),
+                      [&](const Segment* s) { return distance_to_segment(px, py, *s) <= params_.max_distance_px; }))
+        cls.covered_px += step;
+    });
   }
   return out;
 }
