@@ -91,8 +91,8 @@ TEST_F(CliBench, JsonListsAllSevenRowsInBothOrders) {
     else EXPECT_GT(segments, 0) << d;
   }
   EXPECT_EQ(names,
-            (std::vector<std::string>{"fieldlines", "fieldlines+light", "fieldlines+stripes", "fieldlines+coarse", "fieldlines+junctions",
-                                      "fieldlines+features", "fieldlines+ground", "edlines", "fld", "lsd", "gradients", "floor"}));
+            (std::vector<std::string>{"fieldlines", "fieldlines+light", "fieldlines+stripes", "fieldlines+coarse",
+                                      "fieldlines+thin", "fieldlines+scales", "fieldlines+junctions", "fieldlines+features", "fieldlines+ground", "edlines", "fld", "lsd", "gradients", "floor"}));
   // The camera changes what lies on the ground, not the segments.
   EXPECT_EQ(rows["fieldlines+ground"]["segments_per_image"], rows["fieldlines+features"]["segments_per_image"]);
   // The light adaptation finds the same segments (the field's colour is the reference's here).
@@ -120,8 +120,13 @@ TEST_F(CliBench, JsonListsAllSevenRowsInBothOrders) {
   expect_ratio_summary(j.at("features_over_plain"));
   expect_ratio_summary(j.at("ground_over_features"));
   expect_ratio_summary(j.at("coarse_over_plain"));
-  // The coarse pass adds segments where the full scale has none, and never takes one away.
-  EXPECT_GE(rows["fieldlines+coarse"]["segments_per_image"], rows["fieldlines"]["segments_per_image"]);
+  expect_ratio_summary(j.at("thin_over_plain"));
+  expect_ratio_summary(j.at("scales_over_plain"));
+  // The coarse and thin-line passes add segments where the full scale has none, and never take
+  // one away.
+  for (const char* pass : {"fieldlines+coarse", "fieldlines+thin"})
+    EXPECT_GE(rows[pass]["segments_per_image"], rows["fieldlines"]["segments_per_image"]) << pass;
+  EXPECT_GE(rows["fieldlines+scales"]["segments_per_image"], rows["fieldlines+coarse"]["segments_per_image"]);
 
   // The table shows both orders, the worse ratio with its spread and the target checks on it.
   EXPECT_NE(r.out.find("2 images x 3 rounds x 2 passes in each order (block, interleaved; seed 9)"), std::string::npos)

@@ -280,6 +280,21 @@ TEST(DetectAllocations, NoneWithTheCoarsePass) {
   expect_warm_detect_allocates_nothing(frames, names, every);
 }
 
+// The thin-line pass (DetectorParams::thin_reach) keeps its ridge maps and the list of what it
+// wrote, and reads the gradient pass's kept smoothed grey: still nothing, alone, with every
+// feature stage, and when frame sizes alternate.
+TEST(DetectAllocations, NoneWithTheThinPass) {
+  const auto [frames, names] = synthetic_frames(4, 5);
+  DetectorParams thin;
+  thin.thin_reach = 3;
+  expect_warm_detect_allocates_nothing(frames, names, thin);
+  DetectorParams every = all_features();
+  every.thin_reach = 2;
+  every.thin_to = 1.0;
+  every.coarse_scale = 3;
+  expect_warm_detect_allocates_nothing(frames, names, every);
+}
+
 // With the camera known the centre circle is also fitted on the turf (ground_circle.hpp) and
 // every feature is projected onto it (ground_features.hpp); the camera is set per frame, as a
 // walking robot's pose changes: still nothing.
@@ -352,6 +367,9 @@ TEST(DetectAllocations, NoneWhenSizesAlternateAfterTheLargest) {
   stripes.stripes = true;
   expect_none_when_sizes_alternate(stripes);
   expect_none_when_sizes_alternate(all_features());
+  DetectorParams thin;  // its band and maps follow the frame's size
+  thin.thin_reach = 3;
+  expect_none_when_sizes_alternate(thin);
 }
 
 std::vector<fs::path> images_in(const fs::path& dir) {
@@ -392,6 +410,9 @@ TEST(DetectAllocations, NoneOnTheAuthorsSslFrames) {
   }
   ASSERT_GT(found, 0u) << "the frames must exercise the intersections";
   expect_none_on_folder(dir, 41, all_features());
+  DetectorParams thin = all_features();
+  thin.thin_reach = 3;
+  expect_none_on_folder(dir, 41, thin);
 }
 
 TEST(DetectAllocations, NoneOnHumanoidFramesOfTwoSizes) {

@@ -32,11 +32,13 @@ constexpr const char* kHelp = R"(usage: fieldlines bench [options] PATH...
 Times, in this process, on the same colour images and on one thread (cv::setNumThreads(1);
 our rows may take more with --detector-threads):
   fieldlines  our LineDetector: ELSED + colour gradients + classification
-  fieldlines+light, fieldlines+stripes, fieldlines+coarse, fieldlines+junctions, fieldlines+features,
-  fieldlines+ground
+  fieldlines+light, fieldlines+stripes, fieldlines+coarse, fieldlines+thin, fieldlines+scales,
+  fieldlines+junctions, fieldlines+features, fieldlines+ground
               the same with the per-frame light adaptation, with the stripes stage (every
               marking checked and measured across its width), with the coarse pass (the lower
-              half drawn again at a third of the size: coarse_scale 3), with the stripes, field boundary
+              half drawn again at a third of the size: coarse_scale 3), with the thin-line pass
+              (the upper 0.6 drawn again on lines' ridges: thin_reach 3), with both passes, with
+              the stripes, field boundary
               and L/T/X junctions (the features of the detector's own drawing), or with every
               field feature (those and the centre circle, which draws the frame a second time),
               or with those and a camera (a 60-degree view 30 degrees down, 0.6 m up): every
@@ -60,8 +62,9 @@ costs on the busier frames); the median over rounds. "worse" is the larger of th
 (the less flattering to us), with its min-max over rounds. The targets ours <= 0.4 x edlines
 and ours <= 1.5 x floor (--floor-target) are checked against the worse ratio; gradients/floor
 junctions/fieldlines and features/fieldlines (what the field features cost, target <= 1.2),
-ground/features (what the ground stage adds, target <= 1.1) and coarse/fieldlines (what the
-coarse pass costs, target <= 1.25) are reported the same way.
+ground/features (what the ground stage adds, target <= 1.1), coarse/fieldlines, thin/fieldlines
+and scales/fieldlines (what the coarse pass, the thin-line pass and both cost; target <= 1.25
+each) are reported the same way.
 PATH is an image or a folder; images that fail to load are reported and skipped (exit 1).
 
 options:
@@ -93,7 +96,7 @@ JSON: {"images":N, "scale":{"width","height"} (with --scale only), "detector_thr
     "ours_over_this":RATIO}],
   "targets":{"edlines":TARGET, "floor":TARGET}, "gradients_over_floor":RATIO,
   "junctions_over_plain":RATIO, "features_over_plain":RATIO, "ground_over_features":RATIO,
-  "coarse_over_plain":RATIO}
+  "coarse_over_plain":RATIO, "thin_over_plain":RATIO, "scales_over_plain":RATIO}
   RATIO  = {"block", "interleaved", "worse", "worse_order" ("block" or "interleaved"), "min", "max"}
            (min and max: the worse order's ratio over rounds)
   TARGET = {"ratio" (the worse ours/this), "limit", "met", "order", "min", "max"}
@@ -258,6 +261,10 @@ int cmd_bench(const Args& args) {
   report("ground/features", ground, "every feature with a camera, on the ground too, against without; target <= 1.1");
   const peers::RatioSummary coarse = peers::ratio_in_both_orders(row("fieldlines+coarse"), ours);
   report("coarse/fieldlines", coarse, "the coarse pass (coarse_scale 3) against one scale; target <= 1.25");
+  const peers::RatioSummary thin = peers::ratio_in_both_orders(row("fieldlines+thin"), ours);
+  report("thin/fieldlines", thin, "the thin-line pass (thin_reach 3) against one scale; target <= 1.25");
+  const peers::RatioSummary scales = peers::ratio_in_both_orders(row("fieldlines+scales"), ours);
+  report("scales/fieldlines", scales, "both passes against one scale; target <= 1.25");
 
   if (json_out) {
     nlohmann::ordered_json j{{"images", images.size()}};
@@ -274,6 +281,8 @@ int cmd_bench(const Args& args) {
     j["features_over_plain"] = ratio_json(features);
     j["ground_over_features"] = ratio_json(ground);
     j["coarse_over_plain"] = ratio_json(coarse);
+    j["thin_over_plain"] = ratio_json(thin);
+    j["scales_over_plain"] = ratio_json(scales);
     write_output_file(*json_out, j.dump(2) + "\n");
     std::printf("results written to %s\n", json_out->string().c_str());
   }

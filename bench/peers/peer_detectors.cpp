@@ -51,6 +51,20 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
   ours("fieldlines+coarse", "the same with the coarse pass (the lower half again at a third of the size)",
        std::make_shared<LineDetector>(coarse, thresholds));
 
+  // The thin-line pass (DetectorParams::thin_reach) as calibration turns it on: the upper 0.6
+  // of the frame drawn again on the ridge of lines up to 5 px wide; and both passes together,
+  // what a venue with wide near lines runs.
+  DetectorParams thin = params;
+  thin.thin_reach = 3;
+  thin.thin_to = 0.6;
+  ours("fieldlines+thin", "the same with the thin-line pass (the upper 0.6 again on lines' ridges)",
+       std::make_shared<LineDetector>(thin, thresholds));
+  DetectorParams scales = coarse;
+  scales.thin_reach = thin.thin_reach;
+  scales.thin_to = thin.thin_to;
+  ours("fieldlines+scales", "the same with both: the coarse pass and the thin-line pass",
+       std::make_shared<LineDetector>(scales, thresholds));
+
   // The stripes, the field boundary and the junctions, not the centre circle: the field features
   // from the detector's own drawing (the circle draws the frame a second time).
   DetectorParams lines = with_every_feature(params);

@@ -25,6 +25,8 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   DetectorParams coarse_params;  // the parameters scaled to it, set with the parameters
   cv::Mat coarse_bgr;           // the band it reads, downsampled
   std::vector<Segment> coarse;  // its segments, in full-scale pixels
+  ElsedEngine thin_engine;      // the thin-line pass (DetectorParams::thin_reach)
+  std::vector<Segment> thin;    // its segments
   cv::Mat eight, bgr8;  // the input normalised to 8-bit BGR, reused between calls
   std::optional<Rgb> field;  // of the last frame, when measured
   TurfColours turf;          // of the last frame, when the boundary or the stripes took them
@@ -162,6 +164,34 @@ bool covered(const Segment& s, std::span<const Segment> fine, float reach) {
   return near >= 3;
 }
 
+// Whether `fine` holds both edges of the thin line `s` runs along the centre of: at three of five
+// points along s, parallel segments (within 5 degrees, between their ends) lie within `reach` px
+// on both sides of it, or one within a pixel of it.
+bool edges_held(const Segment& s, std::span<const Segment> fine, float reach) {
+  constexpr float kParallelCos = 0.9962f;  // cos(5 degrees)
+  const float sx = s.x1 - s.x0, sy = s.y1 - s.y0, length = std::hypot(sx, sy);
+  if (!(length > 0)) return true;
+  int held = 0;
+  for (int k = 0; k < 5; ++k) {
+    const float f = (float(k) + 0.5f) / 5, px = s.x0 + f * sx, py = s.y0 + f * sy;
+    bool left = false, right = false;
+    for (const Segment& t : fine) {
+      const float tx = t.x1 - t.x0, ty = t.y1 - t.y0, tl = std::hypot(tx, ty);
+      if (!(tl > 0) || std::abs(sx * tx + sy * ty) < kParallelCos * length * tl) continue;
+      const float along = ((px - t.x0) * tx + (py - t.y0) * ty) / tl;
+      if (along < -reach || along > tl + reach) continue;
+      // Signed across s's direction, whichever way t runs.
+      const float off = ((t.x0 - px) * -sy + (t.y0 - py) * sx) / length +
+                        along / tl * ((tx * -sy + ty * sx) / length);
+      if (std::abs(off) > reach) continue;
+      if (std::abs(off) <= 1) left = right = true;
+      (off < 0 ? left : right) = true;
+    }
+    held += left && right;
+  }
+  return held >= 3;
+}
+
 // Into `out`, each of `segments` along which no piece lies: none parallel to it (within 5
 // degrees) with its middle on it (within 2 px of its line, between its ends).
 void collect_unpieced(std::span<const Segment> segments, std::span<const Segment> pieces, std::vector<Segment>& out) {
@@ -204,6 +234,7 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
       adapted_gradient_threshold(params_.gradient_threshold, params_.dark_field, impl_->field);
   impl_->engine.run(*bgr, params_, gradient_threshold, out);
   if (params_.coarse_scale > 1) add_coarse(*bgr, gradient_threshold, out);
+  if (params_.thin_reach > 0) add_thin(*bgr, gradient_threshold, out);
   std::optional<float> gain;
   if (thresholds_.light.enabled && impl_->field)
     gain = light_gain(thresholds_.light.reference_field, *impl_->field);
@@ -238,6 +269,21 @@ void LineDetector::add_coarse(const cv::Mat& bgr, int gradient_threshold, std::v
     s.saliency *= scale;  // validated pixels, counted at the full scale
     if (!covered(s, {out.data(), fine}, scale + 0.5f)) out.push_back(s);
   }
+}
+
+// The thin-line pass: the rows above thin_to drawn on the lines' ridge (ridge_pass.hpp); a
+// segment along a line's centre joins `out` unless the segments there already hold both of the
+// line's edges. Every buffer is reused: no allocation once warm.
+void LineDetector::add_thin(const cv::Mat& bgr, int gradient_threshold, std::vector<Segment>& out) {
+  const int end = std::clamp(static_cast<int>(std::lround(params_.thin_to * bgr.rows)), 0, bgr.rows);
+  std::vector<Segment>& thin = impl_->thin;
+  thin.clear();
+  impl_->thin_engine.run_ridges(bgr, params_, params_.thin_reach, gradient_threshold, end, impl_->engine.gradients(),
+                                thin);
+  const std::size_t fine = out.size();
+  const float reach = static_cast<float>(params_.thin_reach) + 0.5f;
+  for (const Segment& s : thin)
+    if (!edges_held(s, {out.data(), fine}, reach)) out.push_back(s);
 }
 
 // The centre circle needs pieces shorter than the detector's minimum length (a curve has no

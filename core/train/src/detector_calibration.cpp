@@ -59,6 +59,7 @@ FieldContrast::FieldContrast(const DetectorCalibrationParams& params, const Dete
   DetectorParams fine = field_detector(given, params);
   fine.intersections = fine.centre_circle = false;
   fine.coarse_scale = 1;
+  fine.thin_reach = 0;  // far thin lines are not what the coarse pass is weighed on
   DetectorParams coarse = fine;
   coarse.coarse_scale = params.coarse_scale;
   coarse.coarse_from = params.coarse_from;
@@ -113,6 +114,8 @@ DetectorParams field_detector(const DetectorParams& given, const DetectorCalibra
   d.min_line_length = params.min_line_length;
   d.stripes = true;
   d.stripe_turf_colours = params.stripe_turf_colours;
+  d.thin_reach = params.thin_reach;
+  d.thin_to = params.thin_to;
   return d;
 }
 
@@ -146,6 +149,7 @@ nlohmann::json detector_provenance(const FieldContrast& contrast, const Detector
           {"min_line_length", chosen.min_line_length},
           {"coarse_gain", contrast.coarse_gain()},
           {"coarse_scale", chosen.coarse_scale},
+          {"thin_reach", chosen.thin_reach},
           {"stripes", chosen.stripes}};
 }
 

@@ -33,6 +33,38 @@ Gradient sample(const GradientMaps& maps, float x, float y) {
   return {at(maps.dx.data()), at(maps.dy.data())};
 }
 
+// A thin line's colours (ValidationParams::ridge_reach), summed over its pixels: each against
+// the mean of the pixels reach + 1 px to either side across it, just past the widest line the
+// ridge takes.
+class ThinLineColours {
+ public:
+  ThinLineColours(int reach, double nx, double ny)
+      : step_x_(static_cast<int>(std::lround((reach + 1) * nx))), step_y_(static_cast<int>(std::lround((reach + 1) * ny))),
+        nx_(static_cast<float>(nx)), ny_(static_cast<float>(ny)) {}
+  // Skips a pixel whose sides leave the frame.
+  void add(const cv::Mat& bgr, Pixel px) {
+    const int ax = px.x - step_x_, ay = px.y - step_y_, bx = px.x + step_x_, by = px.y + step_y_;
+    if (std::min(ax, bx) < 0 || std::max(ax, bx) >= bgr.cols || std::min(ay, by) < 0 || std::max(ay, by) >= bgr.rows) return;
+    const std::uint8_t* c = bgr.ptr<std::uint8_t>(px.y) + 3 * px.x;
+    const std::uint8_t* a = bgr.ptr<std::uint8_t>(ay) + 3 * ax;
+    const std::uint8_t* b = bgr.ptr<std::uint8_t>(by) + 3 * bx;
+    for (int ch = 0; ch < 3; ++ch) line_[2 - ch] += float(c[ch]) - 0.5f * (float(a[ch]) + float(b[ch]));
+    ++count_;
+  }
+  // The colour transition from the sides to the line, along the segment's normal: what an edge
+  // of the line carries.
+  void set_gradients(Segment& out) const {
+    const float inv = count_ > 0 ? 1.f / static_cast<float>(count_) : 0.f;
+    for (int ch = 0; ch < 3; ++ch) out.grad_x[ch] = line_[ch] * inv * nx_, out.grad_y[ch] = line_[ch] * inv * ny_;
+  }
+
+ private:
+  int step_x_, step_y_;
+  float nx_, ny_;
+  Rgb line_{};
+  int count_ = 0;
+};
+
 }  // namespace
 
 bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, const GradientMaps& maps,
@@ -138,8 +170,11 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
     }
     ++window_count;
   };
+  ThinLineColours thin(params.ridge_reach, nx, ny);
+  const auto colours = [&](Pixel px) { params.ridge_reach > 0 ? thin.add(bgr, px) : add_window(px); };
   // Sobel of the mean window / 4, in R,G,B order; y is the image-down derivative.
   const auto set_gradients = [&] {
+    if (params.ridge_reach > 0) return thin.set_gradients(out);
     if (int_sums) {
 #if CV_SIMD128
       for (int r = 0; r < 3; ++r) {
@@ -167,12 +202,12 @@ bool validate_segment(const LineModel& seg, const std::vector<Pixel>& chain, con
     // One visit for both tests.
     for_each_pixel([&](Pixel px) {
       test_angle(px);
-      add_window(px);
+      colours(px);
     });
     set_gradients();
   } else {
     // The colours first: a segment they rule out skips the angle test.
-    for_each_pixel(add_window);
+    for_each_pixel(colours);
     set_gradients();
     out.saliency = 0;
     if (!keep.test(keep.context, out)) return false;

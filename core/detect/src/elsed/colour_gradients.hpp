@@ -16,6 +16,14 @@ namespace fieldlines::elsed {
 struct ValidationParams {
   double max_angle_error = 0;  // radians between a pixel's gradient and the segment normal
   bool validate = false;       // false: keep every segment, saliency = Euclidean length
+  // > 0: the segment runs along a thin line's centre (ridge_pass.hpp), and its colours are the
+  // line's: per channel, each pixel against the mean of the two pixels ridge_reach + 1 px to
+  // either side across the segment, averaged, along the segment's normal (pointing down, or
+  // right when it stands upright). So a thin line's segment carries the colour transition from
+  // turf to paint, which the colour classes test as they test an edge's. (Tried: dropping lines
+  // whose two sides differ, a wall's foot, or that still fall past them, a wide line's soft
+  // middle: no venue's figures changed, or precision fell; docs/detector.md.)
+  int ridge_reach = 0;
 };
 
 // A caller's test of a segment's endpoints and colour gradients (saliency 0): false drops it.
@@ -26,7 +34,8 @@ struct SegmentFilter {
 
 // Checks a drawn segment: it is kept when more of its inlier pixels (ends trimmed) have a
 // gradient orientation within the threshold of its normal than not. While visiting them, the
-// 3x3 BGR windows around those pixels are summed; the mean window is Sobel-filtered once.
+// 3x3 BGR windows around those pixels are summed; the mean window is Sobel-filtered once (a
+// thin line's segment: its colours as ValidationParams::ridge_reach says).
 // Fills `out` (endpoints, saliency, gradients; label untouched) and returns whether it is valid.
 // With a `keep` test, the windows are summed first and a segment it drops is not validated
 // (false); the segments it keeps come out as without it.

@@ -27,13 +27,15 @@ void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& pa
     for (elsed::GradientPass& p : passes_) p.set_threshold(gradient_threshold);
     pass_threshold_ = gradient_threshold;
   }
+  const bool keep_smoothed = params.thin_reach > 0;  // the thin-line pass reads it
+  for (elsed::GradientPass& p : passes_) p.set_keep_smoothed(keep_smoothed);
   const int h = bgr.rows, bands = passes_.front().band_count(h, params.threads);
   if (bands == 1) {
     passes_.front().run(bgr, maps_);
     return;
   }
   workers_.resize(params.threads - 1);  // once; later frames reuse the threads
-  elsed::GradientPass::size_maps(bgr, maps_);
+  elsed::GradientPass::size_maps(bgr, maps_, keep_smoothed);
   auto band = [&](int i) {
     passes_[static_cast<std::size_t>(i)].run_rows(bgr, maps_, h * i / bands, h * (i + 1) / bands);
   };
@@ -122,8 +124,17 @@ void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, int grad
   draw_and_validate(bgr, params, params.min_line_length, {}, out);
 }
 
+void ElsedEngine::run_ridges(const cv::Mat& bgr, const DetectorParams& params, int reach, int threshold,
+                             int row_end, const elsed::GradientMaps& frame, std::vector<Segment>& out) {
+  const cv::Mat band = bgr.rowRange(0, std::clamp(row_end, 0, bgr.rows));  // a view: no copy
+  if (band.rows < 3) return;
+  ridges_.run(frame, band.rows, reach, threshold, maps_);
+  find_anchors(params.scan_interval, params.anchor_threshold, band, {});
+  draw_and_validate(band, params, params.min_line_length, {}, out, reach);
+}
+
 void ElsedEngine::draw_and_validate(const cv::Mat& bgr, const DetectorParams& params, int min_line_length,
-                                    elsed::SegmentFilter keep, std::vector<Segment>& out) {
+                                    elsed::SegmentFilter keep, std::vector<Segment>& out, int ridge_reach) {
   elsed::DrawerParams& dp = drawer_params_;
   dp.line_fit_error = params.line_fit_error;
   dp.px_to_segment_dist = params.px_to_segment_dist;
@@ -137,7 +148,7 @@ void ElsedEngine::draw_and_validate(const cv::Mat& bgr, const DetectorParams& pa
     drawer_.draw_from_anchor(a);
   }
 
-  const elsed::ValidationParams vp{params.validation_threshold, params.validate};
+  const elsed::ValidationParams vp{params.validation_threshold, params.validate, ridge_reach};
   Segment s;
   for (const elsed::LineModel& seg : drawer_.segments()) {
     if (elsed::validate_segment(seg, drawer_.chain(), maps_, bgr, vp, s, keep)) out.push_back(s);

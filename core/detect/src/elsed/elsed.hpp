@@ -11,6 +11,7 @@
 #include "edge_drawer.hpp"
 #include "elsed_types.hpp"
 #include "gradient_pass.hpp"
+#include "ridge_pass.hpp"
 #include "fieldlines/detect/detector.hpp"
 
 #pragma GCC visibility push(hidden)  // private to the library (see line_model.hpp)
@@ -23,6 +24,13 @@ class ElsedEngine {
   // `gradient_threshold` stands for params.gradient_threshold: the frame's own (a dark field's
   // is lower, light.hpp), so that a caller need not copy the parameters per frame.
   void run(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold, std::vector<Segment>& out);
+  // The thin-line pass (ridge_pass.hpp): the same anchors, drawing and validation on the ridge of
+  // lines up to 2 reach - 1 px wide, in rows [0, row_end); segments along the lines' centres,
+  // with the lines' colours (colour_gradients.hpp), appended to `out`.
+  // `frame`: the gradients() of another engine's run() on this frame with these params (its
+  // smoothed grey).
+  void run_ridges(const cv::Mat& bgr, const DetectorParams& params, int reach, int threshold, int row_end,
+                  const elsed::GradientMaps& frame, std::vector<Segment>& out);
   // The first stage alone (what run() starts with): fills gradients().
   void compute_gradients(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold);
   const elsed::GradientMaps& gradients() const { return maps_; }
@@ -57,12 +65,13 @@ class ElsedEngine {
 
  private:
   void draw_and_validate(const cv::Mat& bgr, const DetectorParams& params, int min_line_length,
-                         elsed::SegmentFilter keep, std::vector<Segment>& out);
+                         elsed::SegmentFilter keep, std::vector<Segment>& out, int ridge_reach = 0);
   void find_anchors(int scan_interval, int threshold, const cv::Mat& bgr, const AnchorLimits& limits);
 
   // One pass per thread (each its own scratch rows), all configured alike; passes_[0] runs on
   // the calling thread.
   std::vector<elsed::GradientPass> passes_;
+  elsed::RidgePass ridges_;
   elsed::BandWorkers workers_;  // started when a frame first splits into bands
   int pass_kernel_ = -1, pass_threshold_ = -1;  // what passes_ are configured for
   double pass_sigma_ = -1;

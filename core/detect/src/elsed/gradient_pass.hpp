@@ -27,6 +27,9 @@ class GradientPass {
   // Allocates the kernel; call when the parameters change, not per frame.
   void configure(int gaussian_kernel, double gaussian_sigma, int gradient_threshold);
   void set_threshold(int gradient_threshold) { threshold_ = gradient_threshold; }  // per frame: no kernel
+  // Whether run() also writes the smoothed grey image into GradientMaps::smooth (size_maps with
+  // `smooth` sizes it): a row copy per row, for the thin-line pass (ridge_pass.hpp).
+  void set_keep_smoothed(bool on) { keep_smoothed_ = on; }
   // bgr: 8-bit, 3 channels, at least 1x1. Sizes `maps` (by capacity) and fills all of it.
   void run(const cv::Mat& bgr, GradientMaps& maps);
   // Rows [row_begin, row_end) of `maps`, already sized for bgr (size_maps): the same bits as the
@@ -34,7 +37,7 @@ class GradientPass {
   // borders only the image's first and last rows. Passes on separate threads may fill disjoint
   // bands of one `maps` at once (each pass has its own scratch).
   void run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begin, int row_end);
-  static void size_maps(const cv::Mat& bgr, GradientMaps& maps);
+  static void size_maps(const cv::Mat& bgr, GradientMaps& maps, bool smooth = false);
   // Row bands worth running for `rows` rows on `threads` threads: at each band edge 2r + 2
   // smoothed rows are computed by both neighbours, so no band is thinner than kMinBandRows or
   // twice the kernel; 1 means the whole image in one pass.
@@ -42,7 +45,8 @@ class GradientPass {
   static constexpr int kMinBandRows = 32;
 
  private:
-  bool use_avx2_ = false;  // the CPU has AVX2: gradient_rows_avx2's kernels instead of SSE2/NEON
+  bool use_avx2_ = false;
+  bool keep_smoothed_ = false;  // the CPU has AVX2: gradient_rows_avx2's kernels instead of SSE2/NEON
   int radius_ = 0;
   int threshold_ = 0;
   std::vector<std::uint16_t> kernel_{256};

@@ -91,6 +91,8 @@ class LineDetector {
   void find_pieces(const cv::Mat& bgr, std::optional<float> gain, std::span<const Segment> segments);
   // The coarse pass of DetectorParams::coarse_scale: its segments where the full scale has none.
   void add_coarse(const cv::Mat& bgr, int gradient_threshold, std::vector<Segment>& out);
+  // The thin-line pass of DetectorParams::thin_reach: its segments where no two edges are.
+  void add_thin(const cv::Mat& bgr, int gradient_threshold, std::vector<Segment>& out);
   DetectorParams params_;
   Thresholds thresholds_;
   bool find_boundary_ = false;

@@ -70,6 +70,13 @@ struct DetectorParams {
   // none of them lies along it (detector.cpp). 1: off, the method's one scale.
   int coarse_scale = 1;
   double coarse_from = 0.5;
+  // Far rows' lines a pixel or two wide give the gradient two edges so close that smoothing
+  // blurs them into each other; the line itself is brighter than both sides. With thin_reach
+  // above 0, the rows above thin_to (a share of the height) are drawn a second time on that
+  // ridge (lines up to 2 thin_reach - 1 px wide), and a segment along a line's centre joins the
+  // others where they do not already hold both of its edges (detector.cpp). 0: off.
+  int thin_reach = 0;
+  double thin_to = 0.6;
   bool operator==(const DetectorParams&) const = default;
 };
 
@@ -95,7 +102,7 @@ struct ParamSpec {
   bool in_files = true;     // written into and read from thresholds and project files
 };
 
-inline constexpr std::array<ParamSpec, 28> kDetectorParamSpecs{{
+inline constexpr std::array<ParamSpec, 30> kDetectorParamSpecs{{
     {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
      .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
     {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
@@ -158,6 +165,11 @@ inline constexpr std::array<ParamSpec, 28> kDetectorParamSpecs{{
      .slider = {1, 4}},
     {.name = "coarse_from", .member = &DetectorParams::coarse_from, .range = {0, 1},
      .help = "the coarse pass covers the rows below this share of the height", .slider = {0, 1}},
+    {.name = "thin_reach", .member = &DetectorParams::thin_reach, .range = {0, 8}, .unit = "px",
+     .help = "also draw lines up to 2k - 1 px wide along their centres, above thin_to (far, thin lines); 0: off",
+     .slider = {0, 4}},
+    {.name = "thin_to", .member = &DetectorParams::thin_to, .range = {0, 1},
+     .help = "the thin-line pass covers the rows above this share of the height", .slider = {0, 1}},
 }};
 
 // The spec named `name`, or nullptr.

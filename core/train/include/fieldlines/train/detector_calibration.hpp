@@ -26,6 +26,15 @@
 // 0), where it adds more clutter than lines
 // (docs/detector.md, "The coarse pass").
 //
+// The thin-line pass (DetectorParams::thin_reach: far lines up to 5 px wide drawn along their
+// centres) is always on, over the upper 0.6 of the frame. Held out on the venues: marking recall
+// +0.083 on Bangkok (0.696 -> 0.779) and +0.031 on SSL, the share of line edges on any segment
+// +0.083 and +0.031; the others within 0.001, precision at most 0.007 lower (Bordeaux). Chosen
+// per venue instead (on where the pass added stripes over the frames), the choice turned on a
+// count of two to twelve stripes per half, and SSL's second half sat on the limit; the band's
+// end from where those stripes lay swung from 0.25 to 0.46 between SSL's halves, while Bangkok's
+// far lines need 0.6 (docs/detector.md, "The thin-line pass").
+//
 // Units: gradients are the detector's, Sobel |dx| + |dy| of the smoothed grey image.
 #include <cstddef>
 #include <memory>
@@ -53,6 +62,8 @@ struct DetectorCalibrationParams {
   int coarse_scale = 3;             // the coarse pass tried (3 recovered more than 2 on Humanoid)...
   double coarse_from = 0.5;         // ...from half the height down...
   double min_coarse_gain = 0.2;     // ...and kept when it adds this share to the stripes' length
+  int thin_reach = 3;               // the thin-line pass, always on (see the header)...
+  double thin_to = 0.6;             // ...over the rows above this share of the height
 };
 
 // The field's contrast per frame: percentiles of the gradient on its green pixels
@@ -86,8 +97,8 @@ class FieldContrast {
   double fine_px_ = 0, coarse_px_ = 0;
 };
 
-// `given` with the anchor grid, minimum length and smoothing of `params` and the stripes stage
-// on: the choice below when a frame showed a field and follow_contrast is off.
+// `given` with the anchor grid, minimum length and smoothing of `params`, the stripes stage and
+// the thin-line pass on: the choice below when a frame showed a field and follow_contrast is off.
 DetectorParams field_detector(const DetectorParams& given, const DetectorCalibrationParams& params = {});
 
 // field_detector(given, params), with the coarse pass where `contrast` measured it to add

@@ -1,0 +1,97 @@
+#include "ridge_rows_avx2.hpp"
+
+// Compiled for AVX2 through a target attribute, with no header of inline functions of its own
+// (see gradient_rows_avx2.cpp for why).
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define FIELDLINES_AVX2 1
+#define AVX2_FN __attribute__((target("avx2")))
+#endif
+
+namespace fieldlines::elsed::avx2 {
+
+#ifdef FIELDLINES_AVX2
+namespace {
+
+AVX2_FN inline __m256i load(const std::uint8_t* p) { return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)); }
+AVX2_FN inline void store(std::int16_t* p, __m256i v) { _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), v); }
+
+// 16 of a block's columns from x (bytes: the ridges `ax`, `ay`, and 0xFF where dy's sign turns),
+// widened: dx, dy and mag written in the Sobel's units (4 per grey level), zero below the
+// threshold; returns the direction (1: horizontal) in 16-bit lanes, zero below it too.
+AVX2_FN inline __m256i write_half(__m128i ax8, __m128i ay8, __m128i neg8, __m256i below, int x, const RidgeRow& out) {
+  const __m256i gx = _mm256_slli_epi16(_mm256_cvtepu8_epi16(ax8), 2), gy = _mm256_slli_epi16(_mm256_cvtepu8_epi16(ay8), 2);
+  const __m256i m = _mm256_add_epi16(gx, gy);
+  const __m256i kept = _mm256_cmpgt_epi16(m, below);
+  const __m256i signed_gy = _mm256_blendv_epi8(gy, _mm256_sub_epi16(_mm256_setzero_si256(), gy), _mm256_cvtepi8_epi16(neg8));
+  store(out.dx + x, _mm256_and_si256(gx, kept));
+  store(out.dy + x, _mm256_and_si256(signed_gy, kept));
+  store(out.mag + x, _mm256_and_si256(m, kept));
+  return _mm256_and_si256(_mm256_and_si256(_mm256_cmpgt_epi16(gy, gx), kept), _mm256_set1_epi16(1));
+}
+
+// See ridge_pass.cpp's ridge_row: ridges in bytes (a saturating difference is the clamp at zero),
+// 32 columns at a time; a block with a pixel that may reach the threshold is written whole.
+template <int R>
+AVX2_FN int ridge_row_r(const std::uint8_t* g, std::ptrdiff_t stride, int x0, int x1, int threshold, const RidgeRow& out) {
+  constexpr int D = R * 7 / 10 > 1 ? R * 7 / 10 : 1;
+  const int least = (threshold + 3) / 4 > 255 ? 255 : (threshold + 3) / 4;  // the byte sum that may reach it
+  const __m256i floor = _mm256_set1_epi8(static_cast<char>(least));
+  const __m256i below = _mm256_set1_epi16(static_cast<short>(threshold - 1));
+  const auto block = [&](int x) AVX2_FN {
+    const std::uint8_t* p = g + x;
+    const __m256i c = load(p);
+    __m256i ax = _mm256_setzero_si256(), ay = ax;
+    for (int d = 1; d <= R; ++d) {
+      ax = _mm256_max_epu8(ax, _mm256_min_epu8(_mm256_subs_epu8(c, load(p - d)), _mm256_subs_epu8(c, load(p + d))));
+      ay = _mm256_max_epu8(ay, _mm256_min_epu8(_mm256_subs_epu8(c, load(p - d * stride)),
+                                               _mm256_subs_epu8(c, load(p + d * stride))));
+    }
+    const __m256i sum = _mm256_adds_epu8(ax, ay);  // sum >= least as max(sum, least) == sum
+    if (_mm256_movemask_epi8(_mm256_cmpeq_epi8(_mm256_max_epu8(sum, floor), sum)) == 0) return;  // no line here
+    __m256i f = _mm256_setzero_si256(), r = f;
+    for (int d = 1; d <= D; ++d) {
+      f = _mm256_max_epu8(f, _mm256_min_epu8(_mm256_subs_epu8(c, load(p - d * stride - d)),
+                                             _mm256_subs_epu8(c, load(p + d * stride + d))));
+      r = _mm256_max_epu8(r, _mm256_min_epu8(_mm256_subs_epu8(c, load(p - d * stride + d)),
+                                             _mm256_subs_epu8(c, load(p + d * stride - d))));
+    }
+    const __m256i neg = _mm256_xor_si256(_mm256_cmpeq_epi8(_mm256_max_epu8(r, f), f), _mm256_set1_epi8(-1));  // r > f
+    const __m256i lo = write_half(_mm256_castsi256_si128(ax), _mm256_castsi256_si128(ay), _mm256_castsi256_si128(neg),
+                                  below, x, out);
+    const __m256i hi = write_half(_mm256_extracti128_si256(ax, 1), _mm256_extracti128_si256(ay, 1),
+                                  _mm256_extracti128_si256(neg, 1), below, x + 16, out);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.state + x), _mm256_permute4x64_epi64(_mm256_packus_epi16(lo, hi), 0xD8));
+    out.blocks[(*out.block_count)++] = out.first + static_cast<std::uint32_t>(x);
+  };
+  if (x1 - x0 < 32) return x0;
+  int x = x0;
+  for (; x + 32 <= x1; x += 32) block(x);
+  if (x < x1) block(x1 - 32);  // the row's last columns, in a block overlapping the one before
+  return x1;
+}
+
+}  // namespace
+
+int ridge_row(const std::uint8_t* g, std::ptrdiff_t stride, int reach, int x0, int x1, int threshold,
+              const RidgeRow& out) {
+  switch (reach) {
+    case 1: return ridge_row_r<1>(g, stride, x0, x1, threshold, out);
+    case 2: return ridge_row_r<2>(g, stride, x0, x1, threshold, out);
+    case 3: return ridge_row_r<3>(g, stride, x0, x1, threshold, out);
+    case 4: return ridge_row_r<4>(g, stride, x0, x1, threshold, out);
+    case 5: return ridge_row_r<5>(g, stride, x0, x1, threshold, out);
+    case 6: return ridge_row_r<6>(g, stride, x0, x1, threshold, out);
+    case 7: return ridge_row_r<7>(g, stride, x0, x1, threshold, out);
+    case 8: return ridge_row_r<8>(g, stride, x0, x1, threshold, out);
+    default: return x0;
+  }
+}
+
+#else
+
+int ridge_row(const std::uint8_t*, std::ptrdiff_t, int, int x0, int, int, const RidgeRow&) { return x0; }
+
+#endif
+
+}  // namespace fieldlines::elsed::avx2

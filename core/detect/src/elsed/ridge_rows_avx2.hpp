@@ -1,0 +1,33 @@
+#pragma once
+// Private: the thin-line pass's ridge rows (ridge_pass.cpp) in AVX2 (32 columns at a time),
+// chosen at run time on x86-64 CPUs that have it (gradient_rows_avx2.hpp's available());
+// everywhere else it does nothing and ridge_pass.cpp's universal-intrinsics kernel (SSE2 / NEON)
+// runs. Same arithmetic, same bits (tests/ridge_pass_test.cpp compares them).
+#include <cstddef>
+#include <cstdint>
+
+namespace fieldlines::elsed {
+
+// One row of the ridge maps being written, and the list of the blocks written (each
+// kRidgeBlock px from its start), which the next frame clears.
+struct RidgeRow {
+  std::int16_t *dx, *dy, *mag;
+  std::uint8_t* state;
+  std::uint32_t first;       // the row's first pixel's index in the maps
+  std::uint32_t* blocks;     // room for every block of the row
+  std::size_t* block_count;  // blocks written so far
+};
+inline constexpr int kRidgeBlock = 32;
+
+}  // namespace fieldlines::elsed
+
+namespace fieldlines::elsed::avx2 {
+
+// Columns [x0, x1) of a row of the smoothed grey `g` (rows above and below at multiples of
+// `stride`), for lines up to 2 reach - 1 px wide (reach 1..8), kept at `threshold` (1..32767):
+// each block of 32 columns with a kept pixel is written whole (zeros where none) and listed.
+// Returns x1, or x0 when the row is shorter than 32 columns (the caller does it).
+int ridge_row(const std::uint8_t* g, std::ptrdiff_t stride, int reach, int x0, int x1, int threshold,
+              const RidgeRow& out);
+
+}  // namespace fieldlines::elsed::avx2
