@@ -275,11 +275,10 @@ void LineDetector::add_coarse(const cv::Mat& bgr, int gradient_threshold, std::v
 // segment along a line's centre joins `out` unless the segments there already hold both of the
 // line's edges. Every buffer is reused: no allocation once warm.
 void LineDetector::add_thin(const cv::Mat& bgr, int gradient_threshold, std::vector<Segment>& out) {
-  const int end = std::clamp(static_cast<int>(std::lround(params_.thin_to * bgr.rows)), 0, bgr.rows);
   std::vector<Segment>& thin = impl_->thin;
   thin.clear();
-  impl_->thin_engine.run_ridges(bgr, params_, params_.thin_reach, gradient_threshold, end, impl_->engine.gradients(),
-                                thin);
+  impl_->thin_engine.run_ridges(bgr, params_, params_.thin_reach, gradient_threshold, thin_band_end(params_, bgr.rows),
+                                impl_->engine.gradients(), thin);
   const std::size_t fine = out.size();
   const float reach = static_cast<float>(params_.thin_reach) + 0.5f;
   for (const Segment& s : thin)

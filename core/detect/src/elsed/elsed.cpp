@@ -27,8 +27,10 @@ void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& pa
     for (elsed::GradientPass& p : passes_) p.set_threshold(gradient_threshold);
     pass_threshold_ = gradient_threshold;
   }
-  const bool keep_smoothed = params.thin_reach > 0;  // the thin-line pass reads it
-  for (elsed::GradientPass& p : passes_) p.set_keep_smoothed(keep_smoothed);
+  // The thin-line pass reads its band's smoothed grey and `reach` rows below it.
+  const int keep_rows = params.thin_reach > 0 ? std::min(bgr.rows, thin_band_end(params, bgr.rows) + params.thin_reach) : 0;
+  const bool keep_smoothed = keep_rows > 0;
+  for (elsed::GradientPass& p : passes_) p.set_keep_smoothed(keep_rows);
   const int h = bgr.rows, bands = passes_.front().band_count(h, params.threads);
   if (bands == 1) {
     passes_.front().run(bgr, maps_);

@@ -248,7 +248,7 @@ void GradientPass::size_maps(const cv::Mat& bgr, GradientMaps& maps, bool smooth
 }
 
 void GradientPass::run(const cv::Mat& bgr, GradientMaps& maps) {
-  size_maps(bgr, maps, keep_smoothed_);
+  size_maps(bgr, maps, keep_smoothed_ > 0);
   run_rows(bgr, maps, 0, bgr.rows);
 }
 
@@ -292,7 +292,7 @@ void GradientPass::run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begi
     v_pass(rows, w, kernel_.data(), r, b + 1);
     b[0] = b[1];  // Sobel's BORDER_REPLICATE
     b[w + 1] = b[w];
-    if (keep_smoothed_ && yb >= row_begin && yb < row_end)
+    if (yb < keep_smoothed_ && yb >= row_begin && yb < row_end)
       std::copy_n(b + 1, w, maps.smooth.data() + static_cast<std::size_t>(yb) * static_cast<std::size_t>(w));
     if (yb - 1 >= row_begin && yb - 1 < row_end) sobel(yb - 1);
     if (yb == h - 1 && yb < row_end) sobel(yb);

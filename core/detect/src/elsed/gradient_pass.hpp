@@ -27,9 +27,10 @@ class GradientPass {
   // Allocates the kernel; call when the parameters change, not per frame.
   void configure(int gaussian_kernel, double gaussian_sigma, int gradient_threshold);
   void set_threshold(int gradient_threshold) { threshold_ = gradient_threshold; }  // per frame: no kernel
-  // Whether run() also writes the smoothed grey image into GradientMaps::smooth (size_maps with
-  // `smooth` sizes it): a row copy per row, for the thin-line pass (ridge_pass.hpp).
-  void set_keep_smoothed(bool on) { keep_smoothed_ = on; }
+  // How many of the first rows run() also writes of the smoothed grey image into
+  // GradientMaps::smooth (size_maps with `smooth` sizes it): a row copy per row, for the
+  // thin-line pass (ridge_pass.hpp). 0: none.
+  void set_keep_smoothed(int rows) { keep_smoothed_ = rows; }
   // bgr: 8-bit, 3 channels, at least 1x1. Sizes `maps` (by capacity) and fills all of it.
   void run(const cv::Mat& bgr, GradientMaps& maps);
   // Rows [row_begin, row_end) of `maps`, already sized for bgr (size_maps): the same bits as the
@@ -46,7 +47,7 @@ class GradientPass {
 
  private:
   bool use_avx2_ = false;
-  bool keep_smoothed_ = false;  // the CPU has AVX2: gradient_rows_avx2's kernels instead of SSE2/NEON
+  int keep_smoothed_ = 0;  // the CPU has AVX2: gradient_rows_avx2's kernels instead of SSE2/NEON
   int radius_ = 0;
   int threshold_ = 0;
   std::vector<std::uint16_t> kernel_{256};

@@ -59,12 +59,14 @@ void ridge_row(const std::uint8_t* g, std::ptrdiff_t stride, int x0, int x1, int
   const cv::v_uint8x16 floor = cv::v_setall_u8(static_cast<std::uint8_t>(least));
   const auto block = [&](int b) {
     const auto at = [&](std::ptrdiff_t offset) { return cv::v_load(g + b + offset); };
-    const cv::v_uint8x16 c = at(0);
-    cv::v_uint8x16 ax = cv::v_setzero_u8(), ay = ax;
-    for (int d = 1; d <= R; ++d) {  // uint8 operator- saturates
-      ax = cv::v_max(ax, cv::v_min(c - at(-d), c - at(d)));
-      ay = cv::v_max(ay, cv::v_min(c - at(-d * stride), c - at(d * stride)));
+    // The most over d of the lesser rise, c - max(side, other side), as c less the least such
+    // max (uint8 operator- saturates: the clamp at zero).
+    cv::v_uint8x16 sx = cv::v_max(at(-1), at(1)), sy = cv::v_max(at(-stride), at(stride));
+    for (int d = 2; d <= R; ++d) {
+      sx = cv::v_min(sx, cv::v_max(at(-d), at(d)));
+      sy = cv::v_min(sy, cv::v_max(at(-d * stride), at(d * stride)));
     }
+    const cv::v_uint8x16 c = at(0), ax = c - sx, ay = c - sy;
     if (cv::v_check_any((ax + ay) >= floor)) write_block<R>(g, stride, b, b + 16, threshold, out);
   };
   if (x < x1 && x1 - x0 >= 16) {

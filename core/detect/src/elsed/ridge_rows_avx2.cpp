@@ -40,13 +40,14 @@ AVX2_FN int ridge_row_r(const std::uint8_t* g, std::ptrdiff_t stride, int x0, in
   const __m256i below = _mm256_set1_epi16(static_cast<short>(threshold - 1));
   const auto block = [&](int x) AVX2_FN {
     const std::uint8_t* p = g + x;
+    // The most over d of the lesser rise, c - max(side, other side), as c less the least such max.
     const __m256i c = load(p);
-    __m256i ax = _mm256_setzero_si256(), ay = ax;
-    for (int d = 1; d <= R; ++d) {
-      ax = _mm256_max_epu8(ax, _mm256_min_epu8(_mm256_subs_epu8(c, load(p - d)), _mm256_subs_epu8(c, load(p + d))));
-      ay = _mm256_max_epu8(ay, _mm256_min_epu8(_mm256_subs_epu8(c, load(p - d * stride)),
-                                               _mm256_subs_epu8(c, load(p + d * stride))));
+    __m256i sx = _mm256_max_epu8(load(p - 1), load(p + 1)), sy = _mm256_max_epu8(load(p - stride), load(p + stride));
+    for (int d = 2; d <= R; ++d) {
+      sx = _mm256_min_epu8(sx, _mm256_max_epu8(load(p - d), load(p + d)));
+      sy = _mm256_min_epu8(sy, _mm256_max_epu8(load(p - d * stride), load(p + d * stride)));
     }
+    const __m256i ax = _mm256_subs_epu8(c, sx), ay = _mm256_subs_epu8(c, sy);
     const __m256i sum = _mm256_adds_epu8(ax, ay);  // sum >= least as max(sum, least) == sum
     if (_mm256_movemask_epi8(_mm256_cmpeq_epi8(_mm256_max_epu8(sum, floor), sum)) == 0) return;  // no line here
     __m256i f = _mm256_setzero_si256(), r = f;
