@@ -232,9 +232,15 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   const FieldColours colours = stripe_colours();
   const int gradient_threshold =
       adapted_gradient_threshold(params_.gradient_threshold, params_.dark_field, impl_->field);
-  impl_->engine.run(*bgr, params_, gradient_threshold, out);
+  // The thin-line pass's ridge rows come out of the frame's own gradient pass (ridge_pass.hpp).
+  const bool thin = params_.thin_reach > 0;
+  elsed::RidgeTarget ridge;
+  if (thin)
+    ridge = impl_->thin_engine.ridge_target(bgr->cols, thin_band_end(params_, bgr->rows), params_.thin_reach,
+                                            gradient_threshold);
+  impl_->engine.run(*bgr, params_, gradient_threshold, out, thin ? &ridge : nullptr);
   if (params_.coarse_scale > 1) add_coarse(*bgr, gradient_threshold, out);
-  if (params_.thin_reach > 0) add_thin(*bgr, gradient_threshold, out);
+  if (thin) add_thin(*bgr, out);
   std::optional<float> gain;
   if (thresholds_.light.enabled && impl_->field)
     gain = light_gain(thresholds_.light.reference_field, *impl_->field);
@@ -271,14 +277,13 @@ void LineDetector::add_coarse(const cv::Mat& bgr, int gradient_threshold, std::v
   }
 }
 
-// The thin-line pass: the rows above thin_to drawn on the lines' ridge (ridge_pass.hpp); a
-// segment along a line's centre joins `out` unless the segments there already hold both of the
-// line's edges. Every buffer is reused: no allocation once warm.
-void LineDetector::add_thin(const cv::Mat& bgr, int gradient_threshold, std::vector<Segment>& out) {
+// The thin-line pass: the rows above thin_to drawn on the lines' ridge (ridge_pass.hpp), which
+// the gradient pass wrote; a segment along a line's centre joins `out` unless the segments there
+// already hold both of the line's edges. Every buffer is reused: no allocation once warm.
+void LineDetector::add_thin(const cv::Mat& bgr, std::vector<Segment>& out) {
   std::vector<Segment>& thin = impl_->thin;
   thin.clear();
-  impl_->thin_engine.run_ridges(bgr, params_, params_.thin_reach, gradient_threshold, thin_band_end(params_, bgr.rows),
-                                impl_->engine.gradients(), thin);
+  impl_->thin_engine.draw_ridges(bgr, params_, params_.thin_reach, thin);
   const std::size_t fine = out.size();
   const float reach = static_cast<float>(params_.thin_reach) + 0.5f;
   for (const Segment& s : thin)

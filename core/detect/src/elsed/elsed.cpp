@@ -13,7 +13,8 @@ using elsed::dir_of;
 using elsed::mark_of;
 using elsed::Pixel;
 
-void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold) {
+void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold,
+                                    const elsed::RidgeTarget* ridge) {
   const auto threads = static_cast<std::size_t>(params.threads);
   if (passes_.size() != threads || params.gaussian_kernel != pass_kernel_ || params.gaussian_sigma != pass_sigma_) {
     passes_.resize(threads);
@@ -27,19 +28,18 @@ void ElsedEngine::compute_gradients(const cv::Mat& bgr, const DetectorParams& pa
     for (elsed::GradientPass& p : passes_) p.set_threshold(gradient_threshold);
     pass_threshold_ = gradient_threshold;
   }
-  // The thin-line pass reads its band's smoothed grey and `reach` rows below it.
-  const int keep_rows = params.thin_reach > 0 ? std::min(bgr.rows, thin_band_end(params, bgr.rows) + params.thin_reach) : 0;
-  const bool keep_smoothed = keep_rows > 0;
-  for (elsed::GradientPass& p : passes_) p.set_keep_smoothed(keep_rows);
   const int h = bgr.rows, bands = passes_.front().band_count(h, params.threads);
+  // One list of written ridge blocks per band (grows with the band count only).
+  if (ridge) ridge->blocks->resize(std::max(ridge->blocks->size(), static_cast<std::size_t>(bands)));
+  const auto blocks = [&](int i) { return ridge ? &(*ridge->blocks)[static_cast<std::size_t>(i)] : nullptr; };
   if (bands == 1) {
-    passes_.front().run(bgr, maps_);
+    passes_.front().run(bgr, maps_, ridge, blocks(0));
     return;
   }
   workers_.resize(params.threads - 1);  // once; later frames reuse the threads
-  elsed::GradientPass::size_maps(bgr, maps_, keep_smoothed);
+  elsed::GradientPass::size_maps(bgr, maps_);
   auto band = [&](int i) {
-    passes_[static_cast<std::size_t>(i)].run_rows(bgr, maps_, h * i / bands, h * (i + 1) / bands);
+    passes_[static_cast<std::size_t>(i)].run_rows(bgr, maps_, h * i / bands, h * (i + 1) / bands, ridge, blocks(i));
   };
   workers_.run(bands, band);
 }
@@ -112,8 +112,8 @@ void ElsedEngine::find_anchors(int scan_interval, int threshold, const cv::Mat& 
 }
 
 void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold,
-                      std::vector<Segment>& out) {
-  compute_gradients(bgr, params, gradient_threshold);
+                      std::vector<Segment>& out, const elsed::RidgeTarget* ridge) {
+  compute_gradients(bgr, params, gradient_threshold, ridge);
 
   // With no anchor at all, retry with a halved threshold (down to zero) like the method.
   int anchor_threshold = params.anchor_threshold;
@@ -126,11 +126,14 @@ void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, int grad
   draw_and_validate(bgr, params, params.min_line_length, {}, out);
 }
 
-void ElsedEngine::run_ridges(const cv::Mat& bgr, const DetectorParams& params, int reach, int threshold,
-                             int row_end, const elsed::GradientMaps& frame, std::vector<Segment>& out) {
-  const cv::Mat band = bgr.rowRange(0, std::clamp(row_end, 0, bgr.rows));  // a view: no copy
-  if (band.rows < 3) return;
-  ridges_.run(frame, band.rows, reach, threshold, maps_);
+elsed::RidgeTarget ElsedEngine::ridge_target(int width, int rows, int reach, int threshold) {
+  elsed::ready_ridge_maps(width, rows, maps_, ridge_blocks_);
+  return {std::clamp(reach, 1, elsed::kMaxRidgeReach), std::max(threshold, 1), ridge_avx2_, &maps_, &ridge_blocks_};
+}
+
+void ElsedEngine::draw_ridges(const cv::Mat& bgr, const DetectorParams& params, int reach, std::vector<Segment>& out) {
+  const cv::Mat band = bgr.rowRange(0, std::clamp(maps_.height, 0, bgr.rows));  // a view: no copy
+  if (band.rows < 3 || maps_.width != bgr.cols) return;
   find_anchors(params.scan_interval, params.anchor_threshold, band, {});
   draw_and_validate(band, params, params.min_line_length, {}, out, reach);
 }

@@ -11,6 +11,7 @@
 #include "edge_drawer.hpp"
 #include "elsed_types.hpp"
 #include "gradient_pass.hpp"
+#include "gradient_rows_avx2.hpp"
 #include "ridge_pass.hpp"
 #include "fieldlines/detect/detector.hpp"
 
@@ -23,16 +24,20 @@ class ElsedEngine {
   // bgr: 8-bit, 3 channels, at least 3x3. Appends unclassified segments to `out`.
   // `gradient_threshold` stands for params.gradient_threshold: the frame's own (a dark field's
   // is lower, light.hpp), so that a caller need not copy the parameters per frame.
-  void run(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold, std::vector<Segment>& out);
-  // The thin-line pass (ridge_pass.hpp): the same anchors, drawing and validation on the ridge of
-  // lines up to 2 reach - 1 px wide, in rows [0, row_end); segments along the lines' centres,
-  // with the lines' colours (colour_gradients.hpp), appended to `out`.
-  // `frame`: the gradients() of another engine's run() on this frame with these params (its
-  // smoothed grey).
-  void run_ridges(const cv::Mat& bgr, const DetectorParams& params, int reach, int threshold, int row_end,
-                  const elsed::GradientMaps& frame, std::vector<Segment>& out);
+  // With `ridge` (another engine's ridge_target()), the gradient pass also writes that engine's
+  // ridge maps.
+  void run(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold, std::vector<Segment>& out,
+           const elsed::RidgeTarget* ridge = nullptr);
+  // This engine as the thin-line pass (ridge_pass.hpp): readies its ridge maps for the first
+  // `rows` rows of a frame `width` wide, for lines up to 2 reach - 1 px wide, and says where the
+  // frame's run() (another engine's) writes them. Then draw_ridges(): the same anchors, drawing
+  // and validation on them; segments along the lines' centres, with the lines' colours
+  // (colour_gradients.hpp), appended to `out`.
+  elsed::RidgeTarget ridge_target(int width, int rows, int reach, int threshold);
+  void draw_ridges(const cv::Mat& bgr, const DetectorParams& params, int reach, std::vector<Segment>& out);
   // The first stage alone (what run() starts with): fills gradients().
-  void compute_gradients(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold);
+  void compute_gradients(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold,
+                         const elsed::RidgeTarget* ridge = nullptr);
   const elsed::GradientMaps& gradients() const { return maps_; }
   // Where anchors may lie, in square cells of `cell` px (a coarse mask: cheap to clear and fill).
   struct AnchorCells {
@@ -71,7 +76,8 @@ class ElsedEngine {
   // One pass per thread (each its own scratch rows), all configured alike; passes_[0] runs on
   // the calling thread.
   std::vector<elsed::GradientPass> passes_;
-  elsed::RidgePass ridges_;
+  std::vector<elsed::RidgeBlocks> ridge_blocks_;  // as the thin-line pass: per band, what the frame's pass wrote
+  bool ridge_avx2_ = elsed::avx2::wanted();
   elsed::BandWorkers workers_;  // started when a frame first splits into bands
   int pass_kernel_ = -1, pass_threshold_ = -1;  // what passes_ are configured for
   double pass_sigma_ = -1;

@@ -46,7 +46,6 @@ struct GradientMaps {
   std::vector<std::int16_t> dx, dy;   // Sobel 3x3
   std::vector<std::int16_t> mag;      // |dx| + |dy|, zero below the gradient threshold
   std::vector<PixelState> state;      // direction (Mark::Free until the drawing marks it)
-  std::vector<std::uint8_t> smooth;   // the smoothed grey itself, when kept (the thin-line pass's input)
 };
 
 }  // namespace fieldlines::elsed

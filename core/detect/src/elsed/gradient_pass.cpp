@@ -226,17 +226,19 @@ void gaussian_kernel_q8(int ksize, double sigma, std::vector<std::uint16_t>& out
   out[half] = static_cast<std::uint16_t>(256 - 2 * total);
 }
 
+bool avx2::wanted() {
+  static const bool cpu_has_avx2 = available();
+  return cpu_has_avx2 && std::getenv("FIELDLINES_NO_AVX2") == nullptr;
+}
+
 void GradientPass::configure(int gaussian_kernel, double gaussian_sigma, int gradient_threshold) {
   gaussian_kernel_q8(gaussian_kernel, gaussian_sigma, kernel_);
   radius_ = static_cast<int>(kernel_.size()) / 2;
   threshold_ = gradient_threshold;
-  static const bool cpu_has_avx2 = avx2::available();
-  // FIELDLINES_NO_AVX2 forces the SSE2/NEON kernels, so their bits are tested on AVX2 machines.
-  use_avx2_ = cpu_has_avx2 && std::getenv("FIELDLINES_NO_AVX2") == nullptr;
-
+  use_avx2_ = avx2::wanted();
 }
 
-void GradientPass::size_maps(const cv::Mat& bgr, GradientMaps& maps, bool smooth) {
+void GradientPass::size_maps(const cv::Mat& bgr, GradientMaps& maps) {
   const std::size_t n = static_cast<std::size_t>(bgr.cols) * static_cast<std::size_t>(bgr.rows);
   maps.width = bgr.cols;
   maps.height = bgr.rows;
@@ -244,12 +246,11 @@ void GradientPass::size_maps(const cv::Mat& bgr, GradientMaps& maps, bool smooth
   maps.dy.resize(n);
   maps.mag.resize(n);
   maps.state.resize(n);
-  if (smooth) maps.smooth.resize(n);
 }
 
-void GradientPass::run(const cv::Mat& bgr, GradientMaps& maps) {
-  size_maps(bgr, maps, keep_smoothed_ > 0);
-  run_rows(bgr, maps, 0, bgr.rows);
+void GradientPass::run(const cv::Mat& bgr, GradientMaps& maps, const RidgeTarget* ridge, RidgeBlocks* blocks) {
+  size_maps(bgr, maps);
+  run_rows(bgr, maps, 0, bgr.rows, ridge, blocks);
 }
 
 int GradientPass::band_count(int rows, int threads) const {
@@ -257,23 +258,42 @@ int GradientPass::band_count(int rows, int threads) const {
   return std::clamp(rows / min_rows, 1, std::max(threads, 1));
 }
 
-void GradientPass::run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begin, int row_end) {
+void GradientPass::run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begin, int row_end, const RidgeTarget* ridge,
+                            RidgeBlocks* blocks) {
   const int w = bgr.cols, h = bgr.rows, r = radius_, taps = 2 * r + 1;
   if (row_begin >= row_end) return;
+  // The ridge rows of this band (ridge_pass.hpp): [reach, min(band, h - reach)).
+  const int reach = ridge ? std::clamp(ridge->reach, 1, kMaxRidgeReach) : 0;
+  const int ridge_first = std::max(row_begin, reach);
+  const int ridge_last = ridge ? std::min({row_end, ridge->maps->height, h - reach}) : 0;
+  const bool ridges = blocks && ridge_first < ridge_last;
+  const int slots = ridges ? std::max(3, 2 * reach + 1) : 3;  // the ring holds what both read
   const std::size_t h_stride = static_cast<std::size_t>(w) + kSlack;
   const std::size_t b_stride = static_cast<std::size_t>(w) + 2 + kSlack;
   // Grow only: a smaller frame reuses the larger one's capacity.
   grey_.resize(std::max(grey_.size(), static_cast<std::size_t>(w + 2 * r + kSlack)));
   hrows_.resize(std::max(hrows_.size(), h_stride * static_cast<std::size_t>(taps)));
-  brows_.resize(std::max(brows_.size(), b_stride * 3));
+  brows_.resize(std::max(brows_.size(), b_stride * static_cast<std::size_t>(slots)));
+  if (ridges) blocks->starts.resize(std::max(blocks->starts.size(), blocks->count + max_ridge_blocks(w, ridge_last - ridge_first)));
 
-  // Sobel row y reads smoothed rows y-1..y+1 (replicated at the edges); smoothed row yb reads
-  // grey rows yb-r..yb+r (reflected). `virtual_row` walks the reflected grey rows once each.
-  const int first_b = std::max(row_begin - 1, 0), last_b = std::min(row_end, h - 1);
+  // Sobel row y reads smoothed rows y-1..y+1 (replicated at the edges), ridge row y rows
+  // y-reach..y+reach; smoothed row yb reads grey rows yb-r..yb+r (reflected). `virtual_row` walks
+  // the reflected grey rows once each.
+  const int first_b = std::max(ridges ? std::min(row_begin - 1, ridge_first - reach) : row_begin - 1, 0);
+  const int last_b = std::min(ridges ? std::max(row_end, ridge_last - 1 + reach) : row_end, h - 1);
   const int first_virtual = first_b - r;
   int virtual_row = first_virtual;
   const auto h_slot = [&](int v) { return hrows_.data() + static_cast<std::size_t>((v - first_virtual) % taps) * h_stride; };
-  const auto b_slot = [&](int yb) { return brows_.data() + static_cast<std::size_t>(yb % 3) * b_stride; };
+  const auto b_slot = [&](int yb) { return brows_.data() + static_cast<std::size_t>(yb % slots) * b_stride; };
+  const std::uint8_t* ridge_rows[2 * kMaxRidgeReach + 1];
+  const auto ridge_row_at = [&](int y) {
+    for (int k = 0; k <= 2 * reach; ++k) ridge_rows[k] = b_slot(y - reach + k) + 1;
+    GradientMaps& m = *ridge->maps;
+    const std::size_t at = static_cast<std::size_t>(y) * static_cast<std::size_t>(w);
+    ridge_row(ridge_rows, w, *ridge,
+              {m.dx.data() + at, m.dy.data() + at, m.mag.data() + at, m.state.data() + at, static_cast<std::uint32_t>(at),
+               blocks->starts.data(), &blocks->count});
+  };
   const std::uint16_t* rows[32];
   const SmoothH h_pass = smooth_h_for(r, use_avx2_);
   const SmoothV v_pass = smooth_v_for(r, use_avx2_);
@@ -292,9 +312,8 @@ void GradientPass::run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begi
     v_pass(rows, w, kernel_.data(), r, b + 1);
     b[0] = b[1];  // Sobel's BORDER_REPLICATE
     b[w + 1] = b[w];
-    if (yb < keep_smoothed_ && yb >= row_begin && yb < row_end)
-      std::copy_n(b + 1, w, maps.smooth.data() + static_cast<std::size_t>(yb) * static_cast<std::size_t>(w));
     if (yb - 1 >= row_begin && yb - 1 < row_end) sobel(yb - 1);
+    if (ridges && yb - reach >= ridge_first && yb - reach < ridge_last) ridge_row_at(yb - reach);
     if (yb == h - 1 && yb < row_end) sobel(yb);
   }
 }

@@ -13,6 +13,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "elsed_types.hpp"
+#include "ridge_pass.hpp"
 
 #pragma GCC visibility push(hidden)  // private to the library (see line_model.hpp)
 
@@ -27,18 +28,18 @@ class GradientPass {
   // Allocates the kernel; call when the parameters change, not per frame.
   void configure(int gaussian_kernel, double gaussian_sigma, int gradient_threshold);
   void set_threshold(int gradient_threshold) { threshold_ = gradient_threshold; }  // per frame: no kernel
-  // How many of the first rows run() also writes of the smoothed grey image into
-  // GradientMaps::smooth (size_maps with `smooth` sizes it): a row copy per row, for the
-  // thin-line pass (ridge_pass.hpp). 0: none.
-  void set_keep_smoothed(int rows) { keep_smoothed_ = rows; }
-  // bgr: 8-bit, 3 channels, at least 1x1. Sizes `maps` (by capacity) and fills all of it.
-  void run(const cv::Mat& bgr, GradientMaps& maps);
+
+  // bgr: 8-bit, 3 channels, at least 1x1. Sizes `maps` (by capacity) and fills all of it. With
+  // `ridge`, also writes the thin-line pass's ridge rows (ridge_pass.hpp) into ridge->maps from
+  // the smoothed rows in its ring, listing what it wrote in `blocks`.
+  void run(const cv::Mat& bgr, GradientMaps& maps, const RidgeTarget* ridge = nullptr, RidgeBlocks* blocks = nullptr);
   // Rows [row_begin, row_end) of `maps`, already sized for bgr (size_maps): the same bits as the
   // whole-image pass, since the band reads the rows above and below it that its ring needs and
   // borders only the image's first and last rows. Passes on separate threads may fill disjoint
   // bands of one `maps` at once (each pass has its own scratch).
-  void run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begin, int row_end);
-  static void size_maps(const cv::Mat& bgr, GradientMaps& maps, bool smooth = false);
+  void run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begin, int row_end, const RidgeTarget* ridge = nullptr,
+                RidgeBlocks* blocks = nullptr);
+  static void size_maps(const cv::Mat& bgr, GradientMaps& maps);
   // Row bands worth running for `rows` rows on `threads` threads: at each band edge 2r + 2
   // smoothed rows are computed by both neighbours, so no band is thinner than kMinBandRows or
   // twice the kernel; 1 means the whole image in one pass.
@@ -46,15 +47,14 @@ class GradientPass {
   static constexpr int kMinBandRows = 32;
 
  private:
-  bool use_avx2_ = false;
-  int keep_smoothed_ = 0;  // the CPU has AVX2: gradient_rows_avx2's kernels instead of SSE2/NEON
+  bool use_avx2_ = false;  // the CPU has AVX2: gradient_rows_avx2's kernels instead of SSE2/NEON
   int radius_ = 0;
   int threshold_ = 0;
   std::vector<std::uint16_t> kernel_{256};
   // Scratch, sized to the widest image seen. Rows carry slack so vector loops may run past w.
   std::vector<std::uint8_t> grey_;     // one grey row with radius_ reflected pixels each side
   std::vector<std::uint16_t> hrows_;   // ring of 2*radius_+1 horizontally smoothed rows
-  std::vector<std::uint8_t> brows_;    // ring of 3 smoothed rows, one replicated pixel each side
+  std::vector<std::uint8_t> brows_;    // ring of 3 (2 reach + 1 with ridges) smoothed rows, one replicated pixel each side
 };
 
 }  // namespace fieldlines::elsed

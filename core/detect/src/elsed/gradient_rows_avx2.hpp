@@ -8,6 +8,9 @@
 namespace fieldlines::elsed::avx2 {
 
 bool available();
+// available(), unless FIELDLINES_NO_AVX2 is set: the tests force the SSE2 / NEON kernels with it
+// on AVX2 machines, so that their bits are checked too. Read when a pass is configured.
+bool wanted();
 // Each returns the number of leading pixels it did (0..w); the caller finishes the row.
 int grey_row(const std::uint8_t* bgr, int w, std::uint8_t* out);
 // Whole rows: may write up to 15 pixels past w (scratch rows carry the slack).

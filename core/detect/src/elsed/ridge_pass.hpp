@@ -2,13 +2,14 @@
 // Private: the thin-line pass's first stage. A painted line one to a few pixels wide gives two
 // gradient edges of opposite sign that the Sobel of the smoothed image blurs into each other, and
 // far, faint ones fall below the gradient threshold: the line itself, brighter than the pixels on
-// both sides of it, is the stronger signal. This fills GradientMaps with that ridge instead of a
-// gradient, so that ELSED's anchors, drawing and line fit run on it unchanged and draw segments
-// along the lines' centres:
-//  - the input is the frame's smoothed grey, as the gradient pass smoothed it for its own
-//    Sobel (GradientMaps::smooth): no second pass over the colour frame;
+// both sides of it, is the stronger signal. Ridge maps (GradientMaps) hold that ridge instead of
+// a gradient, so that ELSED's anchors, drawing and line fit run on them unchanged and draw
+// segments along the lines' centres:
+//  - the input is the frame's smoothed grey, as the gradient pass smooths it for its own Sobel:
+//    the pass computes each ridge row while the rows it reads are in its ring (gradient_pass.hpp),
+//    with no second pass over the frame;
 //  - across x (and likewise across y), a pixel's ridge is how much brighter it is than the
-//    darker of the two pixels d px to either side, the most over d = 1..reach (a line up to
+//    brighter of the two pixels d px to either side, the most over d = 1..reach (a line up to
 //    2 reach - 1 px wide fits between them), never below zero;
 //  - dx and dy carry the ridge across x and across y in the Sobel's units (a ridge of c grey
 //    levels reads 4c, as a step of c does), dy's sign set by which diagonal the line runs along
@@ -18,30 +19,46 @@
 //    the state holds the edge direction where kept (vertical elsewhere), every pixel Free.
 //    Only blocks of columns with a kept pixel are written: the maps stay cleared from one frame
 //    to the next but for those (the writes of a dense map cost more than finding the ridge).
-// The maps cover the frame's first `rows` rows (the far rows, where lines are thin), in the
-// frame's coordinates.
+// The maps cover the frame's first rows (the far rows, where lines are thin), in the frame's
+// coordinates.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "elsed_types.hpp"
+#include "ridge_rows_avx2.hpp"
 
 #pragma GCC visibility push(hidden)  // private to the library (see line_model.hpp)
 
 namespace fieldlines::elsed {
 
-class RidgePass {
- public:
-  static constexpr int kMaxReach = 8;  // DetectorParams::thin_reach's range
-  RidgePass();
-  // `frame`: a gradient pass's maps with the smoothed grey kept (GradientPass::set_keep_smoothed);
-  // without it no pixel has a ridge. Sizes `maps` (by capacity) and fills all of it.
-  void run(const GradientMaps& frame, int rows, int reach, int threshold, GradientMaps& maps);
+inline constexpr int kMaxRidgeReach = 8;  // DetectorParams::thin_reach's range
 
- private:
-  bool use_avx2_;  // the CPU has AVX2: ridge_rows_avx2's kernel first
-  std::vector<std::uint32_t> blocks_;  // the blocks the last run() wrote (ridge_rows_avx2.hpp), to clear
-  std::size_t block_count_ = 0;
+// The blocks one gradient pass (one row band) wrote: their first pixels' indices.
+struct RidgeBlocks {
+  std::vector<std::uint32_t> starts;  // room for every block the band may write; `count` used
+  std::size_t count = 0;
 };
+
+// What the gradient pass writes the ridge maps into: `maps` (the band of the frame's first rows:
+// ridge rows are [reach, min(maps->height, frame height - reach))) and, per row band of the pass,
+// the list of what it wrote there.
+struct RidgeTarget {
+  int reach = 1;       // 1..kMaxRidgeReach
+  int threshold = 1;   // on mag, at least 1
+  bool use_avx2 = false;
+  GradientMaps* maps = nullptr;
+  std::vector<RidgeBlocks>* blocks = nullptr;  // one per row band, sized by the pass
+};
+
+// Readies `maps` and `blocks` for a frame: a band `rows` high of a frame `width` wide, cleared
+// whole when its size changed, otherwise only the blocks the last frame listed; every list emptied.
+void ready_ridge_maps(int width, int rows, GradientMaps& maps, std::vector<RidgeBlocks>& blocks);
+// One ridge row from 2 reach + 1 rows of the smoothed grey (`rows[reach]` the row itself), each
+// `width` px; written and listed into `out`.
+void ridge_row(const std::uint8_t* const* rows, int width, const RidgeTarget& target, const RidgeRow& out);
+// Blocks a band of `rows` rows `width` wide may list at most.
+std::size_t max_ridge_blocks(int width, int rows);
 
 }  // namespace fieldlines::elsed
 

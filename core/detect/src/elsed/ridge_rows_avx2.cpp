@@ -33,29 +33,30 @@ AVX2_FN inline __m256i write_half(__m128i ax8, __m128i ay8, __m128i neg8, __m256
 // See ridge_pass.cpp's ridge_row: ridges in bytes (a saturating difference is the clamp at zero),
 // 32 columns at a time; a block with a pixel that may reach the threshold is written whole.
 template <int R>
-AVX2_FN int ridge_row_r(const std::uint8_t* g, std::ptrdiff_t stride, int x0, int x1, int threshold, const RidgeRow& out) {
+AVX2_FN int ridge_row_r(const std::uint8_t* const* rows, int x0, int x1, int threshold, const RidgeRow& out) {
   constexpr int D = R * 7 / 10 > 1 ? R * 7 / 10 : 1;
   const int least = (threshold + 3) / 4 > 255 ? 255 : (threshold + 3) / 4;  // the byte sum that may reach it
   const __m256i floor = _mm256_set1_epi8(static_cast<char>(least));
   const __m256i below = _mm256_set1_epi16(static_cast<short>(threshold - 1));
+  const std::uint8_t* const g = rows[R];
   const auto block = [&](int x) AVX2_FN {
     const std::uint8_t* p = g + x;
     // The most over d of the lesser rise, c - max(side, other side), as c less the least such max.
     const __m256i c = load(p);
-    __m256i sx = _mm256_max_epu8(load(p - 1), load(p + 1)), sy = _mm256_max_epu8(load(p - stride), load(p + stride));
+    __m256i sx = _mm256_max_epu8(load(p - 1), load(p + 1)), sy = _mm256_max_epu8(load(rows[R - 1] + x), load(rows[R + 1] + x));
     for (int d = 2; d <= R; ++d) {
       sx = _mm256_min_epu8(sx, _mm256_max_epu8(load(p - d), load(p + d)));
-      sy = _mm256_min_epu8(sy, _mm256_max_epu8(load(p - d * stride), load(p + d * stride)));
+      sy = _mm256_min_epu8(sy, _mm256_max_epu8(load(rows[R - d] + x), load(rows[R + d] + x)));
     }
     const __m256i ax = _mm256_subs_epu8(c, sx), ay = _mm256_subs_epu8(c, sy);
     const __m256i sum = _mm256_adds_epu8(ax, ay);  // sum >= least as max(sum, least) == sum
     if (_mm256_movemask_epi8(_mm256_cmpeq_epi8(_mm256_max_epu8(sum, floor), sum)) == 0) return;  // no line here
     __m256i f = _mm256_setzero_si256(), r = f;
     for (int d = 1; d <= D; ++d) {
-      f = _mm256_max_epu8(f, _mm256_min_epu8(_mm256_subs_epu8(c, load(p - d * stride - d)),
-                                             _mm256_subs_epu8(c, load(p + d * stride + d))));
-      r = _mm256_max_epu8(r, _mm256_min_epu8(_mm256_subs_epu8(c, load(p - d * stride + d)),
-                                             _mm256_subs_epu8(c, load(p + d * stride - d))));
+      f = _mm256_max_epu8(f, _mm256_min_epu8(_mm256_subs_epu8(c, load(rows[R - d] + x - d)),
+                                             _mm256_subs_epu8(c, load(rows[R + d] + x + d))));
+      r = _mm256_max_epu8(r, _mm256_min_epu8(_mm256_subs_epu8(c, load(rows[R - d] + x + d)),
+                                             _mm256_subs_epu8(c, load(rows[R + d] + x - d))));
     }
     const __m256i neg = _mm256_xor_si256(_mm256_cmpeq_epi8(_mm256_max_epu8(r, f), f), _mm256_set1_epi8(-1));  // r > f
     const __m256i lo = write_half(_mm256_castsi256_si128(ax), _mm256_castsi256_si128(ay), _mm256_castsi256_si128(neg),
@@ -74,24 +75,23 @@ AVX2_FN int ridge_row_r(const std::uint8_t* g, std::ptrdiff_t stride, int x0, in
 
 }  // namespace
 
-int ridge_row(const std::uint8_t* g, std::ptrdiff_t stride, int reach, int x0, int x1, int threshold,
-              const RidgeRow& out) {
+int ridge_row(const std::uint8_t* const* rows, int reach, int x0, int x1, int threshold, const RidgeRow& out) {
   switch (reach) {
-    case 1: return ridge_row_r<1>(g, stride, x0, x1, threshold, out);
-    case 2: return ridge_row_r<2>(g, stride, x0, x1, threshold, out);
-    case 3: return ridge_row_r<3>(g, stride, x0, x1, threshold, out);
-    case 4: return ridge_row_r<4>(g, stride, x0, x1, threshold, out);
-    case 5: return ridge_row_r<5>(g, stride, x0, x1, threshold, out);
-    case 6: return ridge_row_r<6>(g, stride, x0, x1, threshold, out);
-    case 7: return ridge_row_r<7>(g, stride, x0, x1, threshold, out);
-    case 8: return ridge_row_r<8>(g, stride, x0, x1, threshold, out);
+    case 1: return ridge_row_r<1>(rows, x0, x1, threshold, out);
+    case 2: return ridge_row_r<2>(rows, x0, x1, threshold, out);
+    case 3: return ridge_row_r<3>(rows, x0, x1, threshold, out);
+    case 4: return ridge_row_r<4>(rows, x0, x1, threshold, out);
+    case 5: return ridge_row_r<5>(rows, x0, x1, threshold, out);
+    case 6: return ridge_row_r<6>(rows, x0, x1, threshold, out);
+    case 7: return ridge_row_r<7>(rows, x0, x1, threshold, out);
+    case 8: return ridge_row_r<8>(rows, x0, x1, threshold, out);
     default: return x0;
   }
 }
 
 #else
 
-int ridge_row(const std::uint8_t*, std::ptrdiff_t, int, int x0, int, int, const RidgeRow&) { return x0; }
+int ridge_row(const std::uint8_t* const*, int, int x0, int, int, const RidgeRow&) { return x0; }
 
 #endif
 

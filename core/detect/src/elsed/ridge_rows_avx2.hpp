@@ -2,14 +2,14 @@
 // Private: the thin-line pass's ridge rows (ridge_pass.cpp) in AVX2 (32 columns at a time),
 // chosen at run time on x86-64 CPUs that have it (gradient_rows_avx2.hpp's available());
 // everywhere else it does nothing and ridge_pass.cpp's universal-intrinsics kernel (SSE2 / NEON)
-// runs. Same arithmetic, same bits (tests/ridge_pass_test.cpp compares them).
+// runs. Same arithmetic, same bits (tests/thin_pass_test.cpp compares what they draw).
 #include <cstddef>
 #include <cstdint>
 
 namespace fieldlines::elsed {
 
-// One row of the ridge maps being written, and the list of the blocks written (each
-// kRidgeBlock px from its start), which the next frame clears.
+// One row of the ridge maps being written, and the list of the blocks written (each at most
+// kRidgeBlock px from its start, within the row), which the next frame clears.
 struct RidgeRow {
   std::int16_t *dx, *dy, *mag;
   std::uint8_t* state;
@@ -23,11 +23,11 @@ inline constexpr int kRidgeBlock = 32;
 
 namespace fieldlines::elsed::avx2 {
 
-// Columns [x0, x1) of a row of the smoothed grey `g` (rows above and below at multiples of
-// `stride`), for lines up to 2 reach - 1 px wide (reach 1..8), kept at `threshold` (1..32767):
-// each block of 32 columns with a kept pixel is written whole (zeros where none) and listed.
-// Returns x1, or x0 when the row is shorter than 32 columns (the caller does it).
-int ridge_row(const std::uint8_t* g, std::ptrdiff_t stride, int reach, int x0, int x1, int threshold,
-              const RidgeRow& out);
+// Columns [x0, x1) of a row, from 2 reach + 1 rows of the smoothed grey (`rows[reach]` the row
+// itself, rows[reach - d] and rows[reach + d] d rows above and below), for lines up to
+// 2 reach - 1 px wide (reach 1..8), kept at `threshold` (1..32767): each block of 32 columns with
+// a kept pixel is written whole (zeros where none) and listed. Returns x1, or x0 when the row is
+// shorter than 32 columns (the caller does it).
+int ridge_row(const std::uint8_t* const* rows, int reach, int x0, int x1, int threshold, const RidgeRow& out);
 
 }  // namespace fieldlines::elsed::avx2

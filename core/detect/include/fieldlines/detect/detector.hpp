@@ -92,7 +92,7 @@ class LineDetector {
   // The coarse pass of DetectorParams::coarse_scale: its segments where the full scale has none.
   void add_coarse(const cv::Mat& bgr, int gradient_threshold, std::vector<Segment>& out);
   // The thin-line pass of DetectorParams::thin_reach: its segments where no two edges are.
-  void add_thin(const cv::Mat& bgr, int gradient_threshold, std::vector<Segment>& out);
+  void add_thin(const cv::Mat& bgr, std::vector<Segment>& out);
   DetectorParams params_;
   Thresholds thresholds_;
   bool find_boundary_ = false;
