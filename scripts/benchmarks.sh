@@ -208,7 +208,7 @@ for set_id, title, label, folder, options in sets:
                   + (f" The coarse pass (coarse_scale 3, the lower half drawn again at a third of the size, as calibration chooses it) against one "
                      f"scale: coarse/fieldlines = {worse(j['coarse_over_plain'])} (target <= 1.25)."
                      if "coarse_over_plain" in j else "")
-                  + (f" The thin-line pass (thin_reach 3 over the upper 0.6, as calibration sets it): thin/fieldlines = "
+                  + (f" The thin-line pass (thin_reach 2 over the upper 0.6, as calibration sets it): thin/fieldlines = "
                      f"{worse(j['thin_over_plain'])}; both passes: scales/fieldlines = {worse(j['scales_over_plain'])} "
                      f"(target <= 1.25 each)."
                      if "thin_over_plain" in j else ""), ""]

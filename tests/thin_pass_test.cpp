@@ -36,7 +36,7 @@ cv::Mat far_line(bool wall, int width = 2) {
   return test::noisy(clean);
 }
 
-// What calibration runs (detector_calibration.hpp) without and with the pass.
+// What calibration runs (detector_calibration.hpp), without and with the pass at `thin_reach`.
 DetectorParams venue_detector(int thin_reach, double thin_to = 0.6) {
   DetectorParams p;
   p.gaussian_kernel = 5;
@@ -57,7 +57,7 @@ std::vector<Segment> on_centre(const std::vector<Segment>& segments, double reac
 
 TEST(ThinPass, AFarLineBelowAWallGetsASegmentAlongItsCentre) {
   const cv::Mat frame = far_line(true);
-  LineDetector plain(venue_detector(0)), thin(venue_detector(3));
+  LineDetector plain(venue_detector(0)), thin(venue_detector(2));
   const std::vector<Segment> without = plain.detect(frame), with = thin.detect(frame);
   EXPECT_TRUE(on_centre(without, 0.75).empty()) << "the edges alone: the wall's and the line's lower one";
   const std::vector<Segment> centre = on_centre(with, 0.75);
@@ -80,7 +80,7 @@ TEST(ThinPass, AFarLineBelowAWallGetsASegmentAlongItsCentre) {
 // edge, one segment.
 TEST(ThinPass, ALineWithBothEdgesDrawnGetsNoCentreSegment) {
   const cv::Mat frame = far_line(false, 3);
-  LineDetector plain(venue_detector(0)), thin(venue_detector(3));
+  LineDetector plain(venue_detector(0)), thin(venue_detector(2));
   const std::vector<Segment> without = plain.detect(frame), with = thin.detect(frame);
   ASSERT_EQ(on_centre(without, 3).size(), 2u) << "both edges drawn";
   EXPECT_EQ(with.size(), without.size());
@@ -89,7 +89,7 @@ TEST(ThinPass, ALineWithBothEdgesDrawnGetsNoCentreSegment) {
 // Below thin_to the pass draws nothing: the same segments as without it.
 TEST(ThinPass, BelowItsBandNothingChanges) {
   const cv::Mat frame = far_line(true);
-  LineDetector plain(venue_detector(0)), thin(venue_detector(3, 0.15));  // rows above 72: the wall's
+  LineDetector plain(venue_detector(0)), thin(venue_detector(2, 0.15));  // rows above 72: the wall's
   const std::vector<Segment> without = plain.detect(frame), with = thin.detect(frame);
   ASSERT_EQ(with.size(), without.size());
   for (std::size_t i = 0; i < with.size(); ++i) EXPECT_EQ(with[i].x0, without[i].x0);
@@ -121,10 +121,10 @@ TEST(ThinPass, BaselineKernelsDrawWhatAvx2Draws) {
 // A detector reused on frames of other sizes clears what the last frame left: the segments are
 // those of a fresh detector.
 TEST(ThinPass, AReusedDetectorDrawsWhatAFreshOneDraws) {
-  LineDetector reused(venue_detector(3));
+  LineDetector reused(venue_detector(2));
   const cv::Mat wall = far_line(true), small = far_line(true)(cv::Rect(0, 0, 320, 240)).clone();
   for (const cv::Mat* f : {&wall, &small, &wall}) {
-    LineDetector fresh(venue_detector(3));
+    LineDetector fresh(venue_detector(2));
     const std::vector<Segment> a = reused.detect(*f), b = fresh.detect(*f);
     ASSERT_EQ(a.size(), b.size()) << f->cols;
     for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].y0, b[i].y0);
@@ -144,7 +144,7 @@ TEST(ThinPass, CalibrationTurnsItOn) {
 TEST(ThinPass, TinyFramesAndEmptyBandsAreLeftOut) {
   const cv::Mat tiny = test::noisy(cv::Mat(5, 5, CV_8UC3, test::kTurf));
   EXPECT_NO_THROW(LineDetector(venue_detector(8, 1.0)).detect(tiny));
-  EXPECT_NO_THROW(LineDetector(venue_detector(3, 0.0)).detect(far_line(true)));
+  EXPECT_NO_THROW(LineDetector(venue_detector(2, 0.0)).detect(far_line(true)));
   const cv::Mat narrow = test::noisy(cv::Mat(480, 9, CV_8UC3, test::kTurf));
   EXPECT_NO_THROW(LineDetector(venue_detector(8, 1.0)).detect(narrow));
 }

@@ -52,10 +52,10 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
        std::make_shared<LineDetector>(coarse, thresholds));
 
   // The thin-line pass (DetectorParams::thin_reach) as calibration turns it on: the upper 0.6
-  // of the frame drawn again on the ridge of lines up to 5 px wide; and both passes together,
+  // of the frame drawn again on the ridge of lines up to 3 px wide; and both passes together,
   // what a venue with wide near lines runs.
   DetectorParams thin = params;
-  thin.thin_reach = 3;
+  thin.thin_reach = 2;
   thin.thin_to = 0.6;
   ours("fieldlines+thin", "the same with the thin-line pass (the upper 0.6 again on lines' ridges)",
        std::make_shared<LineDetector>(thin, thresholds));

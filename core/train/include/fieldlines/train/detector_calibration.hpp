@@ -26,14 +26,16 @@
 // 0), where it adds more clutter than lines
 // (docs/detector.md, "The coarse pass").
 //
-// The thin-line pass (DetectorParams::thin_reach: far lines up to 5 px wide drawn along their
+// The thin-line pass (DetectorParams::thin_reach: far lines up to 3 px wide drawn along their
 // centres) is always on, over the upper 0.6 of the frame. Held out on the venues: marking recall
-// +0.083 on Bangkok (0.696 -> 0.779) and +0.031 on SSL, the share of line edges on any segment
-// +0.083 and +0.031; the others within 0.001, precision at most 0.007 lower (Bordeaux). Chosen
-// per venue instead (on where the pass added stripes over the frames), the choice turned on a
-// count of two to twelve stripes per half, and SSL's second half sat on the limit; the band's
-// end from where those stripes lay swung from 0.25 to 0.46 between SSL's halves, while Bangkok's
-// far lines need 0.6 (docs/detector.md, "The thin-line pass").
+// +0.067 on Bangkok (0.696 -> 0.763) and +0.025 on SSL, the share of line edges on any segment
+// +0.067 and +0.025; the others within 0.002, precision at most 0.008 lower (Bordeaux). Lines up
+// to 5 px (reach 3) found more (Bangkok 0.779, SSL 0.801) but cost a third more: thin/fieldlines
+// 1.29-1.42 against 1.20-1.24 in the bench's worse order (target 1.25). Chosen per venue instead
+// (on where the pass added stripes over the frames), the choice turned on a count of two to
+// twelve stripes per half, and SSL's second half sat on the limit; the band's end from where
+// those stripes lay swung from 0.25 to 0.46 between SSL's halves, while Bangkok's far lines need
+// 0.6 (docs/detector.md, "The thin-line pass").
 //
 // Units: gradients are the detector's, Sobel |dx| + |dy| of the smoothed grey image.
 #include <cstddef>
@@ -62,7 +64,7 @@ struct DetectorCalibrationParams {
   int coarse_scale = 3;             // the coarse pass tried (3 recovered more than 2 on Humanoid)...
   double coarse_from = 0.5;         // ...from half the height down...
   double min_coarse_gain = 0.2;     // ...and kept when it adds this share to the stripes' length
-  int thin_reach = 3;               // the thin-line pass, always on (see the header)...
+  int thin_reach = 2;               // the thin-line pass, always on (see the header)...
   double thin_to = 0.6;             // ...over the rows above this share of the height
 };
 
