@@ -1,13 +1,6 @@
 #include "gradient_rows_avx2.hpp"
 
-// Every function here is compiled for AVX2 through a target attribute, not a file-wide flag, and
-// this file includes no header with inline functions of its own (only the intrinsics): an AVX2
-// copy of a shared inline function could otherwise be the one the linker keeps for every caller.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#include <immintrin.h>
-#define FIELDLINES_AVX2 1
-#define AVX2_FN __attribute__((target("avx2")))
-#endif
+#include "avx2_target.hpp"
 
 namespace fieldlines::elsed::avx2 {
 

@@ -1,12 +1,6 @@
 #include "ridge_rows_avx2.hpp"
 
-// Compiled for AVX2 through a target attribute, with no header of inline functions of its own
-// (see gradient_rows_avx2.cpp for why).
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#include <immintrin.h>
-#define FIELDLINES_AVX2 1
-#define AVX2_FN __attribute__((target("avx2")))
-#endif
+#include "avx2_target.hpp"
 
 namespace fieldlines::elsed::avx2 {
 
