@@ -2,6 +2,7 @@
 // whose upper edge the wall's own edge swallows, gets a segment along its centre carrying the
 // turf-to-paint colours; where both of a line's edges have segments, or below the pass's band,
 // nothing changes; the SSE2 / NEON kernels give what the AVX2 ones give; calibration turns it on.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <vector>
@@ -74,6 +75,23 @@ TEST(ThinPass, AFarLineBelowAWallGetsASegmentAlongItsCentre) {
   }
   EXPECT_GT(s.grad_y[0], s.grad_y[1]);
   EXPECT_EQ(with.size(), without.size() + 1) << "the rest as without the pass";
+}
+
+// A line's centre is no edge of the field: with a boundary class that takes every colour
+// transition (and no marking class), the wall's edge is a boundary and the centre segment none.
+TEST(ThinPass, ACentreSegmentIsNeverABoundary) {
+  Thresholds any_boundary;
+  any_boundary.boundary.two_sided = true;
+  any_boundary.boundary.thresholds = {0.f, 90.f, 0.f};
+  any_boundary.marking.thresholds = {1e6f, 0.f, 1e6f};
+  const cv::Mat frame = far_line(true);
+  LineDetector plain(venue_detector(0), any_boundary), thin(venue_detector(2), any_boundary);
+  const std::vector<Segment> without = plain.detect(frame), with = thin.detect(frame);
+  ASSERT_EQ(with.size(), without.size() + 1);
+  EXPECT_TRUE(std::any_of(without.begin(), without.end(), [](const Segment& s) { return s.label == Label::Boundary; }));
+  const std::vector<Segment> centre = on_centre(with, 0.75);
+  ASSERT_EQ(centre.size(), 1u);
+  EXPECT_EQ(centre.front().label, Label::None);
 }
 
 // A line whose two edges both have segments gets no third one along its centre: one painted

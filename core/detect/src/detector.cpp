@@ -240,6 +240,7 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
                                             gradient_threshold);
   impl_->engine.run(*bgr, params_, gradient_threshold, out, thin ? &ridge : nullptr);
   if (params_.coarse_scale > 1) add_coarse(*bgr, gradient_threshold, out);
+  const std::size_t thin_from = out.size();  // the thin-line pass's segments come last
   if (thin) add_thin(*bgr, out);
   std::optional<float> gain;
   if (thresholds_.light.enabled && impl_->field)
@@ -247,6 +248,9 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   FieldFeatures& f = impl_->features;
   if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary, {}, &impl_->turf);
   label(out, gain, thresholds_, f.field_boundary);
+  // A line's centre is no edge of the field: a thin-line segment is a marking or nothing.
+  for (std::size_t i = thin_from; i < out.size(); ++i)
+    if (out[i].label == Label::Boundary) out[i].label = Label::None;
   if (stripes)
     find_stripes(*bgr, colours, out, params_, impl_->stripes, f.markings, ThinLines::Level, Shape::Any,
                  thresholds_.field_boundary_gate ? &f.field_boundary : nullptr);
