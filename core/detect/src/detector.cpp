@@ -164,6 +164,11 @@ bool covered(const Segment& s, std::span<const Segment> fine, float reach) {
   return near >= 3;
 }
 
+// The rows [0, end) of a frame `rows` high that the thin-line pass draws (thin_to of them).
+int thin_band_end(const DetectorParams& params, int rows) {
+  return std::clamp(static_cast<int>(std::lround(params.thin_to * rows)), 0, rows);
+}
+
 // Whether `fine` holds both edges of the thin line `s` runs along the centre of: at three of five
 // points along s, parallel segments (within 5 degrees, between their ends) lie within `reach` px
 // on both sides of it, or one within a pixel of it.

@@ -263,7 +263,7 @@ void GradientPass::run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begi
   const int w = bgr.cols, h = bgr.rows, r = radius_, taps = 2 * r + 1;
   if (row_begin >= row_end) return;
   // The ridge rows of this band (ridge_pass.hpp): [reach, min(band, h - reach)).
-  const int reach = ridge ? std::clamp(ridge->reach, 1, kMaxRidgeReach) : 0;
+  const int reach = ridge ? ridge->reach : 0;
   const int ridge_first = std::max(row_begin, reach);
   const int ridge_last = ridge ? std::min({row_end, ridge->maps->height, h - reach}) : 0;
   const bool ridges = blocks && ridge_first < ridge_last;

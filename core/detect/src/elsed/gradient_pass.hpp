@@ -28,7 +28,6 @@ class GradientPass {
   // Allocates the kernel; call when the parameters change, not per frame.
   void configure(int gaussian_kernel, double gaussian_sigma, int gradient_threshold);
   void set_threshold(int gradient_threshold) { threshold_ = gradient_threshold; }  // per frame: no kernel
-
   // bgr: 8-bit, 3 channels, at least 1x1. Sizes `maps` (by capacity) and fills all of it. With
   // `ridge`, also writes the thin-line pass's ridge rows (ridge_pass.hpp) into ridge->maps from
   // the smoothed rows in its ring, listing what it wrote in `blocks`.

@@ -4,7 +4,6 @@
 
 #include <opencv2/core/hal/intrin.hpp>
 
-#include "gradient_rows_avx2.hpp"
 #include "ridge_rows_avx2.hpp"
 
 namespace fieldlines::elsed {
@@ -14,17 +13,13 @@ constexpr PixelState kVertical = with_mark(static_cast<PixelState>(EdgeDir::Vert
 constexpr PixelState kHorizontal = with_mark(static_cast<PixelState>(EdgeDir::Horizontal), Mark::Free);
 static_assert(kVertical == 0 && kHorizontal == 1, "the AVX2 rows write the direction bit alone");
 
-}  // namespace
-
-namespace {
-
 // Columns [x0, x1) of a row from 2 R + 1 rows of the smoothed grey (`rows[R]` the row itself),
 // for lines up to 2 R - 1 px wide: the ridges across x and y in grey levels, 4 per level in the
 // Sobel's units, dy's sign from the diagonals; every column written (zero below the threshold,
 // the direction vertical when the ridge across x is the larger), the span listed.
 template <int R>
 void write_block(const std::uint8_t* const* rows, int x0, int x1, int threshold, const RidgeRow& out) {
-  constexpr int D = R * 7 / 10 > 1 ? R * 7 / 10 : 1;  // R / sqrt(2), at least 1
+  constexpr int D = kRidgeDiagonal<R>;
   const std::uint8_t* g = rows[R];
   for (int x = x0; x < x1; ++x) {
     const int c = g[x];
@@ -48,12 +43,13 @@ void write_block(const std::uint8_t* const* rows, int x0, int x1, int threshold,
 }
 
 // The same for a whole row: blocks of columns tested at once in bytes; only a block with a pixel
-// that may reach the threshold (the byte sum of its ridges at least a quarter of it) is written.
+// that may reach the threshold is written. That pixel's ridges sum to at least a quarter of it
+// in grey levels (`least`; a byte sum saturated at 255 always may).
 template <int R>
 void ridge_row_r(const std::uint8_t* const* rows, int x0, int x1, int threshold, bool use_avx2, const RidgeRow& out) {
-  int x = use_avx2 ? avx2::ridge_row(rows, R, x0, x1, threshold, out) : x0;
-#if CV_SIMD128
   const int least = std::min((threshold + 3) / 4, 255);
+  int x = use_avx2 ? avx2::ridge_row(rows, R, x0, x1, threshold, least, out) : x0;
+#if CV_SIMD128
   const cv::v_uint8x16 floor = cv::v_setall_u8(static_cast<std::uint8_t>(least));
   const auto block = [&](int b) {
     // The most over d of the lesser rise, c - max(side, other side), as c less the least such
@@ -105,9 +101,8 @@ void ready_ridge_maps(int width, int rows, GradientMaps& maps, std::vector<Ridge
 }
 
 void ridge_row(const std::uint8_t* const* rows, int width, const RidgeTarget& target, const RidgeRow& out) {
-  const int reach = std::clamp(target.reach, 1, kMaxRidgeReach);
-  if (width <= 2 * reach) return;  // columns within `reach` of the border get no ridge
-  kRows[reach - 1](rows, reach, width - reach, std::max(target.threshold, 1), target.use_avx2, out);
+  if (width <= 2 * target.reach) return;  // columns within `reach` of the border get no ridge
+  kRows[target.reach - 1](rows, target.reach, width - target.reach, target.threshold, target.use_avx2, out);
 }
 
 std::size_t max_ridge_blocks(int width, int rows) {

@@ -44,8 +44,8 @@ struct RidgeBlocks {
 // ridge rows are [reach, min(maps->height, frame height - reach))) and, per row band of the pass,
 // the list of what it wrote there.
 struct RidgeTarget {
-  int reach = 1;       // 1..kMaxRidgeReach
-  int threshold = 1;   // on mag, at least 1
+  int reach = 1;       // 1..kMaxRidgeReach (ElsedEngine::ridge_target clamps it)
+  int threshold = 1;   // on mag, 1..32767 (likewise)
   bool use_avx2 = false;
   GradientMaps* maps = nullptr;
   std::vector<RidgeBlocks>* blocks = nullptr;  // one per row band, sized by the pass

@@ -27,9 +27,8 @@ AVX2_FN inline __m256i write_half(__m128i ax8, __m128i ay8, __m128i neg8, __m256
 // See ridge_pass.cpp's ridge_row: ridges in bytes (a saturating difference is the clamp at zero),
 // 32 columns at a time; a block with a pixel that may reach the threshold is written whole.
 template <int R>
-AVX2_FN int ridge_row_r(const std::uint8_t* const* rows, int x0, int x1, int threshold, const RidgeRow& out) {
-  constexpr int D = R * 7 / 10 > 1 ? R * 7 / 10 : 1;
-  const int least = (threshold + 3) / 4 > 255 ? 255 : (threshold + 3) / 4;  // the byte sum that may reach it
+AVX2_FN int ridge_row_r(const std::uint8_t* const* rows, int x0, int x1, int threshold, int least, const RidgeRow& out) {
+  constexpr int D = kRidgeDiagonal<R>;
   const __m256i floor = _mm256_set1_epi8(static_cast<char>(least));
   const __m256i below = _mm256_set1_epi16(static_cast<short>(threshold - 1));
   const std::uint8_t* const g = rows[R];
@@ -69,23 +68,23 @@ AVX2_FN int ridge_row_r(const std::uint8_t* const* rows, int x0, int x1, int thr
 
 }  // namespace
 
-int ridge_row(const std::uint8_t* const* rows, int reach, int x0, int x1, int threshold, const RidgeRow& out) {
+int ridge_row(const std::uint8_t* const* rows, int reach, int x0, int x1, int threshold, int least, const RidgeRow& out) {
   switch (reach) {
-    case 1: return ridge_row_r<1>(rows, x0, x1, threshold, out);
-    case 2: return ridge_row_r<2>(rows, x0, x1, threshold, out);
-    case 3: return ridge_row_r<3>(rows, x0, x1, threshold, out);
-    case 4: return ridge_row_r<4>(rows, x0, x1, threshold, out);
-    case 5: return ridge_row_r<5>(rows, x0, x1, threshold, out);
-    case 6: return ridge_row_r<6>(rows, x0, x1, threshold, out);
-    case 7: return ridge_row_r<7>(rows, x0, x1, threshold, out);
-    case 8: return ridge_row_r<8>(rows, x0, x1, threshold, out);
+    case 1: return ridge_row_r<1>(rows, x0, x1, threshold, least, out);
+    case 2: return ridge_row_r<2>(rows, x0, x1, threshold, least, out);
+    case 3: return ridge_row_r<3>(rows, x0, x1, threshold, least, out);
+    case 4: return ridge_row_r<4>(rows, x0, x1, threshold, least, out);
+    case 5: return ridge_row_r<5>(rows, x0, x1, threshold, least, out);
+    case 6: return ridge_row_r<6>(rows, x0, x1, threshold, least, out);
+    case 7: return ridge_row_r<7>(rows, x0, x1, threshold, least, out);
+    case 8: return ridge_row_r<8>(rows, x0, x1, threshold, least, out);
     default: return x0;
   }
 }
 
 #else
 
-int ridge_row(const std::uint8_t* const*, int, int x0, int, int, const RidgeRow&) { return x0; }
+int ridge_row(const std::uint8_t* const*, int, int x0, int, int, int, const RidgeRow&) { return x0; }
 
 #endif
 

@@ -191,12 +191,6 @@ inline DetectorParams with_every_feature(DetectorParams params) {
   return params;
 }
 
-// The rows [0, end) of a frame `rows` high that the thin-line pass draws (thin_to of them).
-inline int thin_band_end(const DetectorParams& params, int rows) {
-  const double end = params.thin_to * rows + 0.5;
-  return end <= 0 ? 0 : end >= rows ? rows : static_cast<int>(end);
-}
-
 // Validates every field against kDetectorParamSpecs; throws fieldlines::Error
 // "detector parameter <name>: <value> is outside <range>" on the first bad one.
 void validate(const DetectorParams& params);

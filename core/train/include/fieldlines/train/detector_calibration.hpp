@@ -30,8 +30,8 @@
 // centres) is always on, over the upper 0.6 of the frame. Held out on the venues: marking recall
 // +0.067 on Bangkok (0.696 -> 0.763) and +0.025 on SSL, the share of line edges on any segment
 // +0.067 and +0.025; the others within 0.002, precision at most 0.008 lower (Bordeaux). Lines up
-// to 5 px (reach 3) found more (Bangkok 0.779, SSL 0.801) but cost a third more: thin/fieldlines
-// 1.29-1.42 against 1.20-1.24 in the bench's worse order (target 1.25). Chosen per venue instead
+// to 5 px (reach 3) found more (Bangkok 0.779, SSL 0.801) but cost more: thin/fieldlines 1.29-1.42
+// against 1.23-1.33 in the bench's worse order (target 1.25). Chosen per venue instead
 // (on where the pass added stripes over the frames), the choice turned on a count of two to
 // twelve stripes per half, and SSL's second half sat on the limit; the band's end from where
 // those stripes lay swung from 0.25 to 0.46 between SSL's halves, while Bangkok's far lines need
