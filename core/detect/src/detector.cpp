@@ -135,12 +135,28 @@ struct MarkingColours {
     return !m.thresholds.field_boundary_gate || m.boundary.empty() || place_of(s, m.boundary) != BoundaryPlace::Above;
   }
 };
+
+// How far the point (px, py) on `s` (direction sx, sy, `length` px long) lies from `t`, when t
+// runs parallel to s (within 5 degrees) and beside the point (between its ends, or at most
+// `reach` px past them): the signed distance from t's line, its sign the same for every t on
+// one side of s whichever way t runs. Nothing otherwise.
+std::optional<float> parallel_offset(float px, float py, float sx, float sy, float length, const Segment& t,
+                                     float reach) {
+  constexpr float kParallelCos = 0.9962f;  // cos(5 degrees)
+  const float tx = t.x1 - t.x0, ty = t.y1 - t.y0, tl = std::hypot(tx, ty);
+  const float dot = sx * tx + sy * ty;
+  if (!(tl > 0) || std::abs(dot) < kParallelCos * length * tl) return std::nullopt;
+  const float along = ((px - t.x0) * tx + (py - t.y0) * ty) / tl;
+  if (along < -reach || along > tl + reach) return std::nullopt;
+  const float off = ((px - t.x0) * ty - (py - t.y0) * tx) / tl;
+  return dot < 0 ? -off : off;
+}
+
 // Whether some of `fine` lies along `s` (a coarse segment): at least three of five points along
 // s lie within `reach` px of a fine segment parallel to it (within 5 degrees), between that
 // one's ends, with its colour gradient on the same side. One painted edge, one segment: the
 // full scale's is the more exact, the coarse one fills only where it has none.
 bool covered(const Segment& s, std::span<const Segment> fine, float reach) {
-  constexpr float kParallelCos = 0.9962f;  // cos(5 degrees)
   const float sx = s.x1 - s.x0, sy = s.y1 - s.y0, length = std::hypot(sx, sy);
   if (!(length > 0)) return true;
   const float nx = -sy / length, ny = sx / length;
@@ -154,11 +170,8 @@ bool covered(const Segment& s, std::span<const Segment> fine, float reach) {
   for (int k = 0; k < 5; ++k) {
     const float f = (float(k) + 0.5f) / 5, px = s.x0 + f * sx, py = s.y0 + f * sy;
     near += std::any_of(fine.begin(), fine.end(), [&](const Segment& t) {
-      const float tx = t.x1 - t.x0, ty = t.y1 - t.y0, tl = std::hypot(tx, ty);
-      if (!(tl > 0) || std::abs(sx * tx + sy * ty) < kParallelCos * length * tl) return false;
-      const float along = ((px - t.x0) * tx + (py - t.y0) * ty) / tl;
-      if (along < -reach || along > tl + reach) return false;
-      return std::abs((px - t.x0) * ty - (py - t.y0) * tx) / tl <= reach && side(t) == s_side;
+      const std::optional<float> off = parallel_offset(px, py, sx, sy, length, t, reach);
+      return off && std::abs(*off) <= reach && side(t) == s_side;
     });
   }
   return near >= 3;
@@ -173,7 +186,6 @@ int thin_band_end(const DetectorParams& params, int rows) {
 // points along s, parallel segments (within 5 degrees, between their ends) lie within `reach` px
 // on both sides of it, or one within a pixel of it.
 bool edges_held(const Segment& s, std::span<const Segment> fine, float reach) {
-  constexpr float kParallelCos = 0.9962f;  // cos(5 degrees)
   const float sx = s.x1 - s.x0, sy = s.y1 - s.y0, length = std::hypot(sx, sy);
   if (!(length > 0)) return true;
   int held = 0;
@@ -181,16 +193,10 @@ bool edges_held(const Segment& s, std::span<const Segment> fine, float reach) {
     const float f = (float(k) + 0.5f) / 5, px = s.x0 + f * sx, py = s.y0 + f * sy;
     bool left = false, right = false;
     for (const Segment& t : fine) {
-      const float tx = t.x1 - t.x0, ty = t.y1 - t.y0, tl = std::hypot(tx, ty);
-      if (!(tl > 0) || std::abs(sx * tx + sy * ty) < kParallelCos * length * tl) continue;
-      const float along = ((px - t.x0) * tx + (py - t.y0) * ty) / tl;
-      if (along < -reach || along > tl + reach) continue;
-      // Signed across s's direction, whichever way t runs.
-      const float off = ((t.x0 - px) * -sy + (t.y0 - py) * sx) / length +
-                        along / tl * ((tx * -sy + ty * sx) / length);
-      if (std::abs(off) > reach) continue;
-      if (std::abs(off) <= 1) left = right = true;
-      (off < 0 ? left : right) = true;
+      const std::optional<float> off = parallel_offset(px, py, sx, sy, length, t, reach);
+      if (!off || std::abs(*off) > reach) continue;
+      if (std::abs(*off) <= 1) left = right = true;
+      (*off < 0 ? left : right) = true;
     }
     held += left && right;
   }
