@@ -1,6 +1,7 @@
 #include "fieldlines/detect/detector.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -136,20 +137,35 @@ struct MarkingColours {
   }
 };
 
-// How far the point (px, py) on `s` (direction sx, sy, `length` px long) lies from `t`, when t
-// runs parallel to s (within 5 degrees) and beside the point (between its ends, or at most
-// `reach` px past them): the signed distance from t's line, its sign the same for every t on
-// one side of s whichever way t runs. Nothing otherwise.
-std::optional<float> parallel_offset(float px, float py, float sx, float sy, float length, const Segment& t,
-                                     float reach) {
+// Calls `at(k, offset, t)` for each of five points along `s` (k = 0..4, the point (k + 0.5) / 5
+// of its length) and each `t` of `fine` that runs parallel to s (within 5 degrees) beside the
+// point (between t's ends, or at most `reach` px past them) with the point at most `reach` px
+// from t's line: `offset` is the point's signed distance from that line, its sign the same for
+// every t on one side of s whichever way t runs. Each t's direction is tested once, and a t whose
+// box lies farther from s's than such a point can be, not at all (the detector has hundreds).
+template <class At>
+void parallel_beside(const Segment& s, std::span<const Segment> fine, float reach, At&& at) {
   constexpr float kParallelCos = 0.9962f;  // cos(5 degrees)
-  const float tx = t.x1 - t.x0, ty = t.y1 - t.y0, tl = std::hypot(tx, ty);
-  const float dot = sx * tx + sy * ty;
-  if (!(tl > 0) || std::abs(dot) < kParallelCos * length * tl) return std::nullopt;
-  const float along = ((px - t.x0) * tx + (py - t.y0) * ty) / tl;
-  if (along < -reach || along > tl + reach) return std::nullopt;
-  const float off = ((px - t.x0) * ty - (py - t.y0) * tx) / tl;
-  return dot < 0 ? -off : off;
+  const float sx = s.x1 - s.x0, sy = s.y1 - s.y0, length = std::hypot(sx, sy);
+  // A point beside t lies within sqrt(2) reach of it (past an end, and off its line).
+  const float margin = 1.5f * reach;
+  const float lo_x = std::min(s.x0, s.x1) - margin, hi_x = std::max(s.x0, s.x1) + margin;
+  const float lo_y = std::min(s.y0, s.y1) - margin, hi_y = std::max(s.y0, s.y1) + margin;
+  for (const Segment& t : fine) {
+    if (std::max(t.x0, t.x1) < lo_x || std::min(t.x0, t.x1) > hi_x || std::max(t.y0, t.y1) < lo_y ||
+        std::min(t.y0, t.y1) > hi_y)
+      continue;
+    const float tx = t.x1 - t.x0, ty = t.y1 - t.y0, tl = std::hypot(tx, ty);
+    const float dot = sx * tx + sy * ty;
+    if (!(tl > 0) || std::abs(dot) < kParallelCos * length * tl) continue;
+    for (int k = 0; k < 5; ++k) {
+      const float f = (float(k) + 0.5f) / 5, px = s.x0 + f * sx, py = s.y0 + f * sy;
+      const float along = ((px - t.x0) * tx + (py - t.y0) * ty) / tl;
+      if (along < -reach || along > tl + reach) continue;
+      const float off = ((px - t.x0) * ty - (py - t.y0) * tx) / tl;
+      if (std::abs(off) <= reach) at(k, dot < 0 ? -off : off, t);
+    }
+  }
 }
 
 // Whether some of `fine` lies along `s` (a coarse segment): at least three of five points along
@@ -166,15 +182,9 @@ bool covered(const Segment& s, std::span<const Segment> fine, float reach) {
     return along >= 0;
   };
   const bool s_side = side(s);
-  int near = 0;
-  for (int k = 0; k < 5; ++k) {
-    const float f = (float(k) + 0.5f) / 5, px = s.x0 + f * sx, py = s.y0 + f * sy;
-    near += std::any_of(fine.begin(), fine.end(), [&](const Segment& t) {
-      const std::optional<float> off = parallel_offset(px, py, sx, sy, length, t, reach);
-      return off && std::abs(*off) <= reach && side(t) == s_side;
-    });
-  }
-  return near >= 3;
+  std::array<bool, 5> near{};
+  parallel_beside(s, fine, reach, [&](int k, float, const Segment& t) { near[k] = near[k] || side(t) == s_side; });
+  return std::count(near.begin(), near.end(), true) >= 3;
 }
 
 // The rows [0, end) of a frame `rows` high that the thin-line pass draws (thin_to of them).
@@ -186,20 +196,14 @@ int thin_band_end(const DetectorParams& params, int rows) {
 // points along s, parallel segments (within 5 degrees, between their ends) lie within `reach` px
 // on both sides of it, or one within a pixel of it.
 bool edges_held(const Segment& s, std::span<const Segment> fine, float reach) {
-  const float sx = s.x1 - s.x0, sy = s.y1 - s.y0, length = std::hypot(sx, sy);
-  if (!(length > 0)) return true;
+  if (!(std::hypot(s.x1 - s.x0, s.y1 - s.y0) > 0)) return true;
+  std::array<bool, 5> left{}, right{};
+  parallel_beside(s, fine, reach, [&](int k, float off, const Segment&) {
+    if (std::abs(off) <= 1) left[k] = right[k] = true;
+    (off < 0 ? left : right)[k] = true;
+  });
   int held = 0;
-  for (int k = 0; k < 5; ++k) {
-    const float f = (float(k) + 0.5f) / 5, px = s.x0 + f * sx, py = s.y0 + f * sy;
-    bool left = false, right = false;
-    for (const Segment& t : fine) {
-      const std::optional<float> off = parallel_offset(px, py, sx, sy, length, t, reach);
-      if (!off || std::abs(*off) > reach) continue;
-      if (std::abs(*off) <= 1) left = right = true;
-      (*off < 0 ? left : right) = true;
-    }
-    held += left && right;
-  }
+  for (int k = 0; k < 5; ++k) held += left[k] && right[k];
   return held >= 3;
 }
 
