@@ -15,7 +15,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "bench/peers/order_rounds.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
 #include "cli_test_support.hpp"
+#include "painted_field.hpp"
 
 namespace fs = std::filesystem;
 using fieldlines::test::CliRun;
@@ -34,7 +36,7 @@ TEST_F(CliBench, HelpNamesTheDetectorsAndExamples) {
   const CliRun r = run_cli({"bench", "--help"}, dir_);
   EXPECT_EQ(r.exit_code, 0);
   for (const char* word : {"edlines", "fld", "lsd", "gradients", "floor", "--rounds", "--repeat", "--seed", "--clock",
-                           "--json", "--scale", "--detector-threads", "block", "interleaved", "worse", "JSON:",
+                           "--json", "--scale", "--detector-threads", "--thresholds", "block", "interleaved", "worse", "JSON:",
                            "\"ours_over_this\"", "\"targets\"", "examples:"})
     EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
@@ -244,6 +246,49 @@ TEST_F(CliBench, DetectorThreadsReachOurRows) {
     EXPECT_EQ(usage.exit_code, 2) << bad;
     EXPECT_NE(usage.err.find("--detector-threads"), std::string::npos) << bad << ": " << usage.err;
   }
+}
+
+// With a thresholds file, our rows run its parameters: its shorter minimum length keeps a mark
+// the built-in one leaves out, and the file's own thin-line pass stays out of the plain row (on a far,
+// faint 2 px line under a wall, which only that pass draws along its centre).
+TEST_F(CliBench, ThresholdsFileSetsOurRows) {
+  cv::Mat clean(480, 640, CV_8UC3, fieldlines::test::kTurf);
+  const std::vector<cv::Point> wall{{0, 0}, {639, 0}, {639, 108}, {0, 95}};  // 5 px above the line
+  cv::fillConvexPoly(clean, wall, fieldlines::test::kDark);
+  const cv::Scalar faint = 0.75 * fieldlines::test::kTurf + 0.25 * cv::Scalar(255, 255, 255);
+  cv::line(clean, {40, 100}, {600, 112}, faint, 2, cv::LINE_AA);
+  cv::line(clean, {100, 300}, {540, 330}, cv::Scalar(255, 255, 255), 6, cv::LINE_AA);
+  cv::line(clean, {300, 420}, {334, 420}, cv::Scalar(255, 255, 255), 6);  // shorter than the built-in minimum
+  const fs::path a = write_image("a.png", fieldlines::test::noisy(clean));
+  const auto segments = [](const json& j, const std::string& name) {
+    for (const json& d : j.at("detectors"))
+      if (d.at("name") == name) return d.at("segments_per_image").get<double>();
+    ADD_FAILURE() << "no row " << name;
+    return -1.0;
+  };
+  const fs::path built_in = dir_ / "built-in.json";
+  ASSERT_EQ(run_cli({"bench", "--rounds", "1", "--quiet", "--json", built_in.string(), a.string()}, dir_).exit_code, 0);
+  fieldlines::ThresholdsFile file;
+  file.detector.gaussian_kernel = 5;
+  file.detector.scan_interval = 2;
+  file.detector.min_line_length = 25;
+  file.detector.thin_reach = 2;  // the plain row must not run it
+  const fs::path th = dir_ / "dense.json";
+  fieldlines::save_thresholds_file(th, file);
+  const fs::path dense = dir_ / "dense-bench.json";
+  const CliRun r = run_cli({"bench", "--rounds", "1", "--quiet", "--thresholds", th.string(), "--json", dense.string(),
+                            a.string()},
+                           dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("fieldlines rows: the detector parameters and thresholds of"), std::string::npos) << r.out;
+  const json jb = json::parse(read_text(built_in)), jd = json::parse(read_text(dense));
+  EXPECT_FALSE(jb.contains("thresholds"));
+  EXPECT_EQ(jd.at("thresholds"), th.string());
+  EXPECT_GT(segments(jd, "fieldlines"), segments(jb, "fieldlines"));
+  EXPECT_LT(segments(jd, "fieldlines"), segments(jd, "fieldlines+thin"));
+  const CliRun missing = run_cli({"bench", "--quiet", "--thresholds", (dir_ / "none.json").string(), a.string()}, dir_);
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_NE(missing.err.find("none.json"), std::string::npos) << missing.err;
 }
 
 // The rounds behind `fieldlines bench`, with stand-in detectors that log their calls.

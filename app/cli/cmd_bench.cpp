@@ -14,6 +14,7 @@
 #include "app/cli/args.hpp"
 #include "app/cli/commands.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
 #include "fieldlines/data/image_io.hpp"
 #include "app/cli/image_inputs.hpp"
 #include "app/cli/output_file.hpp"
@@ -82,6 +83,10 @@ options:
   --scale WxH   resize every loaded image to W x H pixels (cv::resize, INTER_LINEAR; stretched
                 if the aspect ratio differs) before timing, e.g. 1280x720 or 1920x1080;
                 W and H in [8, 8192]
+  --thresholds FILE  every fieldlines row starts from the file's detector parameters and
+                thresholds (what a robot with that file runs: a calibrated one's denser anchor
+                grid, its stripes) instead of the built-in ones; the fieldlines row with the
+                coarse and the thin-line pass off, so that their rows add what they cost
   --detector-threads N  DetectorParams::threads for the fieldlines and gradients rows (default
                 1, in [1, 64]): the gradient pass runs in N row bands at once; the peers and the
                 floor stay on one thread
@@ -89,7 +94,8 @@ options:
   --quiet       no progress on stderr
   -h, --help    this help
 
-JSON: {"images":N, "scale":{"width","height"} (with --scale only), "detector_threads":N,
+JSON: {"images":N, "scale":{"width","height"} (with --scale only), "thresholds":FILE (with
+  --thresholds only), "detector_threads":N,
   "rounds":R, "passes_per_round":N, "seed":S, "clock":"thread-cpu"|"wall",
   "detectors":[{"name", "mean_ms", "median_ms", "p90_ms" (over every timed call, both orders),
     "segments_per_image", "block":{"mean_ms","median_ms","p90_ms"}, "interleaved":{likewise},
@@ -104,6 +110,7 @@ JSON: {"images":N, "scale":{"width","height"} (with --scale only), "detector_thr
 examples:
   fieldlines bench ../shared/data/elsed-ssl/images
   fieldlines bench --rounds 9 --json bench.json frame.png
+  fieldlines bench --thresholds venue.json ../shared/data/humanoid-samples
   fieldlines bench --quiet --rounds 7 --scale 1920x1080 --detector-threads 2 ../shared/data/elsed-ssl/images
 )";
 
@@ -155,7 +162,7 @@ cv::Size parse_scale(const std::string& text) {
 int cmd_bench(const Args& args) {
   const auto parsed = parse_or_print_help(args,
                                           {"--json", "--rounds", "--repeat", "--seed", "--clock", "--floor-target",
-                                           "--scale", "--detector-threads"},
+                                           "--scale", "--detector-threads", "--thresholds"},
                                           {"--quiet"}, kHelp);
   if (!parsed) return 0;
   const ParsedArgs& a = *parsed;
@@ -168,6 +175,13 @@ int cmd_bench(const Args& args) {
   const std::optional<cv::Size> scale =
       a.has("--scale") ? std::optional<cv::Size>(parse_scale(*a.value("--scale"))) : std::nullopt;
   DetectorParams params;
+  Thresholds thresholds;
+  const std::optional<std::string> thresholds_path = a.value("--thresholds");
+  if (thresholds_path) {
+    const ThresholdsFile file = load_thresholds_file(*thresholds_path);
+    params = file.detector, thresholds = file.thresholds;
+    params.coarse_scale = 1, params.thin_reach = 0;  // one scale: the pass rows add them
+  }
   params.threads = a.int_or("--detector-threads", 1, 1, 64);
   const std::string clock = a.value_or("--clock", params.threads == 1 ? "thread-cpu" : "wall");
   if (clock != "thread-cpu" && clock != "wall")
@@ -196,7 +210,7 @@ int cmd_bench(const Args& args) {
   // Single thread for everyone: OpenCV would otherwise parallelise some peers and not others.
   const int previous_threads = cv::getNumThreads();
   cv::setNumThreads(1);
-  const auto detectors = peers::make_timed_detectors(params);
+  const auto detectors = peers::make_timed_detectors(params, thresholds);
   std::vector<peers::DetectorTimes> times;
   {
     ProgressParams pp;
@@ -218,6 +232,7 @@ int cmd_bench(const Args& args) {
               images.size(), images.size() == 1 ? "" : "s", size_note.c_str(), rounds.rounds,
               rounds.rounds == 1 ? "" : "s", rounds.passes, rounds.passes == 1 ? "" : "es",
               static_cast<unsigned long long>(rounds.seed), thread_note.c_str());
+  if (thresholds_path) std::printf("fieldlines rows: the detector parameters and thresholds of %s\n", thresholds_path->c_str());
   std::printf("ms: mean call, %s time; ours/this: median over rounds of the round's ratio of summed times; worse: the larger, "
               "[min-max over rounds, order]\n\n",
               peers::clock_name(rounds.clock));
@@ -269,6 +284,7 @@ int cmd_bench(const Args& args) {
   if (json_out) {
     nlohmann::ordered_json j{{"images", images.size()}};
     if (scale) j["scale"] = {{"width", scale->width}, {"height", scale->height}};
+    if (thresholds_path) j["thresholds"] = *thresholds_path;
     j["detector_threads"] = params.threads;
     j["rounds"] = rounds.rounds;
     j["passes_per_round"] = rounds.passes;
