@@ -76,18 +76,24 @@ speed_sets=()  # "id|title|README label|folder|extra options"
 speed_sets+=("ssl|SSL frames (the method's robot camera)|SSL|$shared/data/elsed-ssl/images|--floor-target 1.5")
 speed_sets+=("humanoid|Humanoid frames (larger, busier scenes)|Humanoid|$shared/data/humanoid-samples|--floor-target 2")
 speed_sets+=("humanoid-720p|Humanoid frames scaled to 1280x720|Humanoid at 1280x720|$shared/data/humanoid-samples|--floor-target 2 --scale 1280x720")
-for set in "${speed_sets[@]}"; do
-  IFS='|' read -r id _ _ folder options <<<"$set"
+# SET: times it into $out/ID.{json,txt,command}, or writes ID.missing when its folder (or the
+# thresholds file it names) is not there.
+time_speed_set() {
+  local id folder options
+  IFS='|' read -r id _ _ folder options <<<"$1"
   read -ra options <<<"$options"
-  if [[ -d "$folder" ]]; then
+  local file=""
+  [[ "${options[*]}" =~ --thresholds\ ([^ ]+) ]] && file=${BASH_REMATCH[1]}
+  if [[ -d "$folder" && ( -z "$file" || -f "$file" ) ]]; then
     command=("$bin" bench --quiet --rounds "$rounds" "${options[@]}" --json "$out/$id.json" "$folder")
     echo "benchmarks.sh: ${command[*]}" >&2
     "${command[@]}" > "$out/$id.txt"
     echo "${command[*]}" > "$out/$id.command"
   else
-    echo "$folder" > "$out/$id.missing"
+    echo "${file:-$folder}" > "$out/$id.missing"
   fi
-done
+}
+for set in "${speed_sets[@]}"; do time_speed_set "$set"; done
 
 # Training and calibration speed (Google Benchmark, CPU time, median of 3 repetitions).
 if [[ -x "$training_bench" ]]; then
@@ -109,6 +115,13 @@ fi
 if [[ -d "$shared/data/msl-samples" ]]; then
   echo "benchmarks.sh: bash scripts/venue_calibration.sh $out/venue-calibration" >&2
   FIELDLINES_BIN="$bin" SHARED="$shared" bash scripts/venue_calibration.sh "$out/venue-calibration" > "$out/venues.md"
+  # What a calibrated robot runs (its dense anchor grid, stripes, and the passes calibration
+  # chose): the venue's first-half file. Listed in docs/benchmarks.md only (README label "-").
+  for set in "humanoid-calibrated|Humanoid frames, with the venue's calibrated file (first half)|-|$shared/data/humanoid-samples|--floor-target 2 --thresholds $out/venue-calibration/humanoid-0.json" \
+             "ssl-calibrated|SSL frames, with the venue's calibrated file (first half)|-|$shared/data/elsed-ssl/images|--floor-target 1.5 --thresholds $out/venue-calibration/ssl-0.json"; do
+    speed_sets+=("$set")
+    time_speed_set "$set"
+  done
   echo "benchmarks.sh: bash scripts/junctions_real.sh $out/junctions-real" >&2
   FIELDLINES_BIN="$bin" SHARED="$shared" bash scripts/junctions_real.sh "$out/junctions-real" > "$out/junctions-real.md"
 fi
@@ -175,8 +188,9 @@ readme_speed = [
 for set_id, title, label, folder, options in sets:
     doc_lines += [f"### {title}", ""]
     if read(f"{set_id}.missing") is not None:
-        doc_lines += [f"Not measured: `{folder}` was not found (the shared data).", ""]
-        readme_speed.append(f"| {label} | not measured: no `{folder}` | | |")
+        doc_lines += [f"Not measured: `{read(f'{set_id}.missing').strip()}` was not found (the shared data, or a file made from it).", ""]
+        if label != "-":
+            readme_speed.append(f"| {label} | not measured: no `{folder}` | | |")
         continue
     j = json.loads(read(f"{set_id}.json"))
     size = f", scaled to {j['scale']['width']}x{j['scale']['height']}" if "scale" in j else ""
@@ -213,6 +227,8 @@ for set_id, title, label, folder, options in sets:
                      f"(target <= 1.25 each)."
                      if "thin_over_plain" in j else ""), ""]
     ours = rows["fieldlines"]
+    if label == "-":
+        continue
     readme_speed.append(
         f"| {label} ({j['images']} images) | {ours['block']['mean_ms']:.2f} / {ours['interleaved']['mean_ms']:.2f} | "
         f"{worse(rows['edlines']['ours_over_this'])} | {worse(rows['floor']['ours_over_this'])} "
