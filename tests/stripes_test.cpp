@@ -651,6 +651,34 @@ TEST(Stripes, TheCheckMeasuresEachStripesWidthAsAShareOfItsRow) {
   EXPECT_EQ(check.width_shares()[3], 0.f) << "plain turf";
 }
 
+// The colours may call one edge of a line a marking and leave the other none (its colour angle
+// off: the turf beyond it in another light, a lens's fringe): the stripe the marked edge measures
+// has that one for its twin, which becomes a marking whatever its colours say. A none edge with no
+// marked twin stays none: the geometry confirms a marking, it does not find one alone.
+TEST(Stripes, TheOtherEdgeOfAMarkedStripeIsAMarkingWhateverItsColours) {
+  cv::Mat clean(480, 640, CV_8UC3, kTurf);
+  cv::rectangle(clean, cv::Point(40, 300), cv::Point(600, 309), kPaint, cv::FILLED);
+  const cv::Mat frame = noisy(clean);
+  const FieldColours field{estimate_field_colour(frame)};
+  Segment upper = row_edge(299.5f, true), lower = row_edge(309.5f, false);
+  lower.label = Label::None;
+  std::vector<Marking> markings;
+  EXPECT_EQ(labels_of(frame, field, {upper, lower}, nullptr, &markings),
+            (std::vector<Label>{Label::Marking, Label::Marking}));
+  ASSERT_EQ(markings.size(), 1u) << "the twins merge into one line";
+  EXPECT_NEAR(0.5f * (markings[0].y0 + markings[0].y1), 304.5f, 1.5f);
+  EXPECT_NEAR(markings[0].width, 10.f, 2.f);
+  upper.label = Label::None;
+  EXPECT_EQ(labels_of(frame, field, {upper, lower}), (std::vector<Label>{Label::None, Label::None}));
+  // Nor does a marked edge of no stripe (a wall's: turf on one side only) make its none twin one.
+  cv::Mat wall(480, 640, CV_8UC3, kTurf);
+  cv::rectangle(wall, cv::Point(0, 0), cv::Point(639, 309), kPaint, cv::FILLED);
+  const cv::Mat walled = noisy(wall);
+  upper.label = Label::Marking;
+  EXPECT_EQ(labels_of(walled, FieldColours{estimate_field_colour(walled)}, {upper, lower}),
+            (std::vector<Label>{Label::None, Label::None}));
+}
+
 TEST(Stripes, OtherLabelsAreLeftAlone) {
   const cv::Mat frame = noisy(cv::Mat(120, 160, CV_8UC3, kTurf));
   StripeWorkspace work;

@@ -442,6 +442,26 @@ void merge_doubles(std::span<Segment> segments, const std::vector<Candidate>& cs
   }
 }
 
+// Whether `s` lies where the other edge of one of `cs`' stripes may: as parallel as twins, beside
+// it along its length, its middle on that one's paint side no farther off than the widest paint
+// of its row and the twins' slack (a superset of what pair_stripes pairs).
+bool near_a_stripe(const Segment& s, std::span<const Segment> segments, std::span<const Candidate> cs,
+                   const DetectorParams& params, int rows) {
+  const float dx = s.x1 - s.x0, dy = s.y1 - s.y0, len = std::hypot(dx, dy);
+  if (!(len > 0.f)) return false;
+  const float mx = 0.5f * (s.x0 + s.x1), my = 0.5f * (s.y0 + s.y1);
+  const float widest = static_cast<float>(params.stripe_max_width) * width_scale(my, rows);
+  const float reach = widest + width_slack(widest);
+  return std::any_of(cs.begin(), cs.end(), [&](const Candidate& c) {
+    const Segment& a = segments[c.segment];
+    if (std::abs(dx * c.ux + dy * c.uy) < kTwinCos * len) return false;
+    const float d = (mx - a.x0) * c.sx + (my - a.y0) * c.sy;
+    if (!(d > 0.f) || d > reach) return false;
+    const Ends e = ends_of(s, a, c);
+    return std::max(e.t0, e.t1) > 0 && std::min(e.t0, e.t1) < std::hypot(a.x1 - a.x0, a.y1 - a.y0);
+  });
+}
+
 // The stripes among `cs` (measured candidates of `segments`) paired with their twins into `out`
 // (cleared first); relabels the segments, moves those on a blur ramp (snap_to_edge) and merges
 // the doubles that makes.
@@ -453,7 +473,7 @@ void pair_stripes(std::span<Segment> segments, std::vector<Candidate>& cs, const
   for (Segment& s : segments)
     if (s.label == Label::Marking) s.label = Label::None;
   for (std::size_t i = 0; i < cs.size(); ++i) {
-    if (cs[i].paired) continue;
+    if (cs[i].paired || cs[i].twin_only) continue;
     const Segment& a = segments[cs[i].segment];
     std::size_t best = cs.size();
     float best_error = 0;
@@ -511,6 +531,28 @@ void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segm
         c.segment = i;
         if (edge_line(bgr8, pixel, segments[i], params, c)) work.candidates.push_back(c);
       }
+    // The other edge of a stripe the colours marked, which they left as none (its colour angle
+    // off: a line's edge against the turf's other side, in another light): a candidate too, which
+    // becomes a marking only as a marking's twin (pair_stripes). Its profiles are measured only
+    // when it lies where such a twin may (near_a_stripe): most none segments of a textured field
+    // lie nowhere near one.
+    const std::size_t found = work.candidates.size();  // the pushes below may move them: spans per use
+    const auto stripes = [&] { return std::span<const Candidate>(work.candidates.data(), found); };
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      if (segments[i].label != Label::None || !near_a_stripe(segments[i], segments, stripes(), params, bgr8.rows) ||
+          std::ranges::any_of(stripes(), [i](const Candidate& c) { return c.segment == i; }))
+        continue;
+      Candidate c;
+      c.segment = i;
+      c.twin_only = true;
+      if (!measure_candidate(bgr8, pixel, segments[i], params, thin, work, c) || (shape == Shape::Straight && !straight(c)))
+        continue;
+      if (on_field) {
+        const Marking centre = centre_of(segments[i], c);
+        if (lies_above(0.5f * (centre.x0 + centre.x1), 0.5f * (centre.y0 + centre.y1), *on_field)) continue;
+      }
+      work.candidates.push_back(c);
+    }
   }
   pair_stripes(segments, work.candidates, params, out);
 }

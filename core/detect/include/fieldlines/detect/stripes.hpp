@@ -86,6 +86,7 @@ struct StripeWorkspace {
     float edge0 = 0, edge1 = 0, edge_median = 0, edge_spread = 0;
     bool paired = false;
     bool moved = false;  // onto its paint's edge (see above)
+    bool twin_only = false;  // a marking only as a marking's twin
   };
   std::vector<Candidate> candidates;
   std::vector<float> brightness;       // one profile: R + G + B per step
