@@ -22,6 +22,7 @@
 #include "fieldlines/detect/thresholds_file.hpp"
 #include "app/cli/image_inputs.hpp"
 #include "app/cli/output_file.hpp"
+#include "app/cli/overlay_files.hpp"
 #include "app/cli/parallel_batch.hpp"
 #include "app/cli/progress.hpp"
 #include "app/cli/subcommand.hpp"
@@ -153,29 +154,6 @@ std::string with_path(const fs::path& path, const std::string& message) {
   return message.rfind(p, 0) == 0 ? message : p + ": " + message;
 }
 
-// Overlay file names, fixed before the batch so they do not depend on thread timing: <stem>.png,
-// or <stem>-2.png... when two inputs share a stem or the name would overwrite an input.
-std::vector<fs::path> overlay_paths(const std::vector<fs::path>& images, const fs::path& dir) {
-  auto canonical = [](const fs::path& p) {
-    std::error_code ec;
-    const fs::path c = fs::weakly_canonical(p, ec);
-    return ec ? fs::absolute(p, ec).lexically_normal() : c;
-  };
-  std::set<fs::path> inputs;
-  for (const auto& p : images) inputs.insert(canonical(p));
-  std::set<std::string> used;
-  std::vector<fs::path> out;
-  for (const auto& p : images) {
-    const std::string stem = p.stem().string().empty() ? "image" : p.stem().string();
-    std::string name = stem + ".png";
-    for (int k = 2; used.count(name) || inputs.count(canonical(dir / name)); ++k)
-      name = stem + "-" + std::to_string(k) + ".png";
-    used.insert(name);
-    out.push_back(dir / name);
-  }
-  return out;
-}
-
 struct ItemResult {
   std::optional<ImageDetections> detections;
   std::optional<std::string> error;
@@ -212,10 +190,7 @@ int cmd_detect(const Args& args) {
   if (opt.video_out || opt.max_frames >= 0) throw Error("--video-out and --max-frames go with --video");
   if (opt.paths.empty()) throw Error("no PATH given: name at least one image or folder (see --help)");
   if (opt.draw) {
-    std::error_code ec;
-    fs::create_directories(*opt.draw, ec);
-    if (!fs::is_directory(*opt.draw))
-      throw Error("--draw " + opt.draw->string() + ": cannot create the folder" + (ec ? " (" + ec.message() + ")" : ""));
+    make_overlay_folder(*opt.draw);
   }
 
   ThresholdsFile config;  // defaults: the reference's parameters and thresholds
@@ -258,15 +233,12 @@ int cmd_detect(const Args& args) {
       d.ellipses = features.ellipses;
       if (opt.camera) d.ground = detector.ground_features();
       if (opt.draw) {
-        std::vector<unsigned char> png;
         OverlayParams look;
         look.field_boundary = &detector.field_boundary();
         if (opt.draw_all) look.above_opacity = 1;
         cv::Mat overlay = draw_overlay(image, d.segments, look);
         draw_field_features(overlay, features);
-        if (!cv::imencode(".png", overlay, png))
-          throw Error("could not encode the overlay as PNG");
-        write_output_file(overlays[i], std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+        write_overlay(overlays[i], overlay);
       }
       results[i].detections = std::move(d);
     } catch (const std::bad_alloc&) {

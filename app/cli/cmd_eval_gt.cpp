@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
+#include <set>
 #include <numbers>
 #include <random>
 #include <string>
@@ -25,6 +27,8 @@
 #include "fieldlines/synth/gt_eval.hpp"
 #include "fieldlines/synth/centre_line_score.hpp"
 #include "fieldlines/synth/hand_truth.hpp"
+#include "app/cli/eval_overlay.hpp"
+#include "app/cli/overlay_files.hpp"
 #include "fieldlines/data/image_io.hpp"
 #include "fieldlines/synth/synth.hpp"
 #include "fieldlines/train/percentile.hpp"
@@ -85,6 +89,12 @@ options:
                      recall, nor in the truth of junctions, their arms and the circle (default 1)
   --markdown         print the table as Markdown
   --json OUT         write the scores as JSON (per group and total)
+  --draw DIR         an overlay per image, DIR/<truth folder>/<name>.png: the segments as
+                     `fieldlines detect --draw` draws them, and every truth line edge dotted green
+                     where a segment of its class lies on it (what recall counts), red where only
+                     a segment of another label does (the classification lost it), cyan where no
+                     segment does (the detector missed it); with --hand, the drawn field boundary
+                     solid green beside the detected one (dashed white)
   -h, --help         this help
 Exit codes: 0 ok, 1 some images could not be read (they are skipped), 2 usage or fatal error.
 
@@ -92,6 +102,7 @@ examples:
   fieldlines eval --gt synth/ssl_test
   fieldlines eval --gt synth/ssl_test synth/kid_test --thresholds robot.json --markdown
   fieldlines eval --hand tests/data/hand_truth/msl-bangkok --data ../shared/data --thresholds msl.json
+  fieldlines eval --hand tests/data/hand_truth/humanoid --data ../shared/data --draw overlays
 )";
 
 // The detected field boundary against a hand-drawn one, per column the hand's polylines span: the
@@ -271,7 +282,15 @@ struct EvalImage {
   synth::GroundTruth truth;
   std::string row, condition;
   std::vector<float> boundary_rows;  // hand truth only: synth::field_boundary_rows
+  std::string folder;                // the truth folder's name: its overlays' subfolder (--draw)
 };
+
+// "dir/" and "dir" both name "dir".
+std::string folder_name(const fs::path& dir) {
+  fs::path normal = dir.lexically_normal();
+  if (normal.filename().empty()) normal = normal.parent_path();
+  return normal.filename().string();
+}
 // Loaded when scored, so a bad truth file skips its image (exit 1) and the others go on.
 using EvalItem = std::function<EvalImage()>;
 
@@ -279,27 +298,24 @@ std::vector<EvalItem> synth_items(const std::vector<fs::path>& dirs) {
   std::vector<EvalItem> items;
   for (const fs::path& dir : dirs)
     for (const auto& [image, truth_file] : list_synth_set(dir))
-      items.push_back([image = image, file = truth_file] {
+      items.push_back([image = image, file = truth_file, folder = folder_name(dir)] {
         synth::GroundTruth truth = synth::load_truth(file);
         std::string row(synth::to_string(truth.scene)), condition(synth::to_string(truth.condition));
         fs::path mask = file.parent_path() / truth.mask;
-        return EvalImage{image, std::move(mask), std::move(truth), std::move(row), std::move(condition), {}};
+        return EvalImage{image, std::move(mask), std::move(truth), std::move(row), std::move(condition), {}, folder};
       });
   return items;
 }
 
 std::vector<EvalItem> hand_items(const std::vector<fs::path>& dirs, const fs::path& data) {
   std::vector<EvalItem> items;
-  for (const fs::path& dir : dirs) {
-    fs::path normal = dir.lexically_normal();
-    if (normal.filename().empty()) normal = normal.parent_path();  // "dir/" names "dir"
+  for (const fs::path& dir : dirs)
     for (const fs::path& file : synth::list_hand_truth(dir))
-      items.push_back([file, data, row = normal.filename().string()] {
+      items.push_back([file, data, row = folder_name(dir)] {
         synth::HandTruth hand = synth::load_hand_truth(file);
         std::vector<float> rows = synth::field_boundary_rows(hand);
-        return EvalImage{data / hand.image, {}, std::move(hand.truth), row, "hand", std::move(rows)};
+        return EvalImage{data / hand.image, {}, std::move(hand.truth), row, "hand", std::move(rows), row};
       });
-  }
   return items;
 }
 
@@ -340,7 +356,8 @@ void give_truth_camera(const synth::GroundTruth& truth, const CameraError& error
 
 int cmd_eval_gt(const Args& args) {
   const auto parsed = parse_or_print_help(
-      args, {"--gt", "--hand", "--data", "--thresholds", "--max-distance", "--min-width", "--json", "--camera-error"},
+      args,
+      {"--gt", "--hand", "--data", "--thresholds", "--max-distance", "--min-width", "--json", "--camera-error", "--draw"},
       {"--markdown", "--features", "--truth-camera"},
       kHelp);
   if (!parsed) return 0;
@@ -367,9 +384,13 @@ int cmd_eval_gt(const Args& args) {
   const CameraError camera_error = parse_camera_error(a.value("--camera-error"));
   if (a.value("--camera-error") && !truth_camera) throw Error("--camera-error needs --truth-camera");
 
+  const std::optional<fs::path> draw = a.value("--draw") ? std::optional<fs::path>(*a.value("--draw")) : std::nullopt;
+  if (draw) make_overlay_folder(*draw);
+  std::set<fs::path> drawn;  // overlays written: a second image of the same name gets <stem>-2.png
+
   const std::vector<EvalItem> items = hand ? hand_items(dirs, *data) : synth_items(dirs);
   LineDetector detector(file.detector, file.thresholds);
-  detector.set_find_field_boundary(features || hand);
+  detector.set_find_field_boundary(features || hand || draw);
   std::map<std::pair<std::string, std::string>, Group> groups;
   Group total;
   int failed = 0;
@@ -381,7 +402,19 @@ int cmd_eval_gt(const Args& args) {
       const auto start = std::chrono::steady_clock::now();
       const std::vector<Segment> segments = detector.detect(img);
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      const GtScore score = GtEdges(item.truth, match).score(segments);
+      const GtEdges truth_edges(item.truth, match);
+      const GtScore score = truth_edges.score(segments);
+      if (draw) {
+        const fs::path folder = *draw / item.folder;
+        make_overlay_folder(folder);
+        const std::string stem = item.image.stem().string();
+        fs::path out = folder / (stem + ".png");
+        std::error_code ec;
+        for (int k = 2; drawn.count(out) || fs::equivalent(out, item.image, ec); ++k)
+          out = folder / (stem + "-" + std::to_string(k) + ".png");
+        drawn.insert(out);
+        write_overlay(out, draw_eval_overlay(img, segments, detector.field_boundary(), truth_edges, item.boundary_rows));
+      }
       synth::FeatureScore feature_score;
       synth::GroundScore ground_score;
       if (features) {
@@ -460,6 +493,7 @@ int cmd_eval_gt(const Args& args) {
   }
   out["total"] = to_json(total);
   if (json_path) write_file_atomically(*json_path, out.dump(2) + "\n");
+  if (draw) std::printf("overlays written to %s\n", draw->string().c_str());
   return failed > 0 ? 1 : 0;
 }
 

@@ -125,29 +125,45 @@ GtScore GtEdges::score(std::span<const Segment> detected) const {
         break;
     }
   }
+  for (const Edge& e : edges_)
+    if (e.visible) (e.label == Label::Marking ? out.marking : out.boundary).visible_px += std::hypot(e.bx - e.ax, e.by - e.ay);
+  walk(detected, truths, [&](const Edge& e, float, float, float step, Seen seen) {
+    if (seen == Seen::Found) (e.label == Label::Marking ? out.marking : out.boundary).covered_px += step;
+  });
+  return out;
+}
+
+void GtEdges::walk(std::span<const Segment> detected, const EdgePointVisitor& visit) const {
+  std::vector<Label> truths;
+  truths.reserve(detected.size());
+  for (const Segment& s : detected) truths.push_back(truth_label(s));
+  walk(detected, truths, visit);
+}
+
+void GtEdges::walk(std::span<const Segment> detected, std::span<const Label> truths,
+                   const EdgePointVisitor& visit) const {
   const float cos_max = synth::cos_of_degrees(params_.max_angle_deg);
+  std::vector<const Segment*> parallel;
+  std::vector<bool> counts;  // per parallel segment: predicted as the edge's class and truly of it
   for (const Edge& e : edges_) {
-    if (!e.visible) continue;
-    GtClassScore& cls = e.label == Label::Marking ? out.marking : out.boundary;
-    const float len = std::hypot(e.bx - e.ax, e.by - e.ay);
-    cls.visible_px += len;
-    if (len <= 0) continue;
+    if (!e.visible || !(std::hypot(e.bx - e.ax, e.by - e.ay) > 0)) continue;
     const Unit de = direction(e.ax, e.ay, e.bx, e.by);
-    // Only correctly labelled segments cover a line: predicted as this class and true members.
-    std::vector<const Segment*> parallel;
+    parallel.clear(), counts.clear();
     for (std::size_t k = 0; k < detected.size(); ++k) {
       const Segment& s = detected[k];
-      if (s.label != e.label || truths[k] != e.label) continue;
-      if (synth::parallel(de, direction(s.x0, s.y0, s.x1, s.y1), cos_max)) parallel.push_back(&s);
+      if (!synth::parallel(de, direction(s.x0, s.y0, s.x1, s.y1), cos_max)) continue;
+      parallel.push_back(&s);
+      // Only correctly labelled segments cover a line: predicted as this class and true members.
+      counts.push_back(s.label == e.label && truths[k] == e.label);
     }
-    if (parallel.empty()) continue;
     synth::along(e.ax, e.ay, e.bx, e.by, [&](float px, float py, float step) {
-      if (std::any_of(parallel.begin(), parallel.end(),
-                      [&](const Segment* s) { return distance_to_segment(px, py, *s) <= params_.max_distance_px; }))
-        cls.covered_px += step;
+      Seen seen = Seen::Missed;
+      for (std::size_t k = 0; k < parallel.size() && seen != Seen::Found; ++k)
+        if (distance_to_segment(px, py, *parallel[k]) <= params_.max_distance_px)
+          seen = counts[k] ? Seen::Found : Seen::OnSegment;
+      visit(e, px, py, step, seen);
     });
   }
-  return out;
 }
 
 std::array<long, 3> label_from_truth(std::span<Segment> segments, const synth::GroundTruth& truth,

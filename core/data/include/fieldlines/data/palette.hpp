@@ -36,6 +36,11 @@ inline constexpr Rgb kOutline{10, 10, 10};      // under every segment
 inline constexpr Rgb kMissedPaint{0, 255, 255};  // cyan
 inline constexpr Rgb kFieldBoundary{255, 255, 255};  // white over the outline: where the green ends
 inline constexpr Rgb kFeature{255, 150, 0};     // orange: centre lines, junctions, the circle (detect --draw)
+// The truth's line edges in `eval --draw`: found (a segment of their class lies on them, as
+// recall counts), lost (only a segment of another label does: the classification dropped them)
+// and missed (no segment: kMissedPaint, as in the studio); the hand-drawn field boundary found's.
+inline constexpr Rgb kTruthFound{0, 255, 0};    // green
+inline constexpr Rgb kTruthLost{255, 0, 0};     // red
 // Segments above the field boundary (stands, walls, lights) are drawn at this opacity, so what
 // lies on the field reads first (detect --draw unless --draw-all, the studio unless asked).
 inline constexpr double kAboveFieldOpacity = 0.3;

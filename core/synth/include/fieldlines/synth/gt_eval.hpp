@@ -12,6 +12,7 @@
 //    min_width_px wide; every wall foot) within max_distance_px of a segment predicted as that
 //    class and parallel to it.
 #include <array>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -61,7 +62,19 @@ class GtEdges {
   };
   const std::vector<Edge>& edges() const { return edges_; }
 
+  // How a point of a visible truth edge is seen by the detected segments: Found when a segment
+  // predicted as the edge's class, and truly of it, lies within max_distance_px and parallel
+  // (what recall counts); OnSegment when only segments of another label or truth do (the
+  // detector drew it, the classification lost it); Missed when no segment does.
+  enum class Seen { Found, OnSegment, Missed };
+  using EdgePointVisitor = std::function<void(const Edge& edge, float x, float y, float step, Seen seen)>;
+  // Visits points along every visible edge, `step` px of it each (`detected`'s labels are the
+  // classifier's predictions): what `fieldlines eval --draw` paints.
+  void walk(std::span<const Segment> detected, const EdgePointVisitor& visit) const;
+
  private:
+  // walk() with the segments' truth labels already known (score() has them).
+  void walk(std::span<const Segment> detected, std::span<const Label> truths, const EdgePointVisitor& visit) const;
   GtMatchParams params_;
   std::vector<Edge> edges_;
 };
