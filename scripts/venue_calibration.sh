@@ -10,9 +10,10 @@
 # Columns: marking P and R (segments, each of a line's two edges), the ceiling, the share of
 # hand-drawn field-boundary columns within 4 px, the stripes' centre lines P / R against the
 # drawn lines' centres (one per line: what the robot takes; fieldlines eval --hand). Prints
-# Markdown. Overlays of the scored frames go to
-# OUT_DIR/overlays/<venue>/{built-in,calibrated}/ (not into docs/: they are the shared data's
-# images).
+# Markdown. Overlays of the scored frames (`eval --draw`: each drawn line edge found, lost by the
+# classification or missed; the drawn and the detected field boundary) go to
+# OUT_DIR/overlays/<venue>/{built-in,calibrated}/<truth half>/ (not into docs/: they are the
+# shared data's images).
 #   usage: bash scripts/venue_calibration.sh [OUT_DIR]   (default build/venue-calibration)
 #   env:   FIELDLINES_BIN (default build/release/app/cli/fieldlines), SHARED (default ../shared)
 set -euo pipefail
@@ -65,10 +66,10 @@ print('; '.join(parts))")
     row "calibrated, coarse pass $k" "$out/$id-coarse$k"
   done
   for k in 0 1; do
-    mapfile -t images < <(scored_images "$id" "$k")
-    [[ ${#images[@]} -gt 0 ]] || continue
-    "$bin" detect --quiet --draw "$out/overlays/$id/built-in" "${images[@]}"
-    "$bin" detect --quiet --thresholds "$out/$id-$k.json" --draw "$out/overlays/$id/calibrated" "${images[@]}"
+    compgen -G "$out/$id-truth$k/*.json" >/dev/null || continue
+    "$bin" eval --hand "$out/$id-truth$k" --data "$data" --draw "$out/overlays/$id/built-in" >/dev/null
+    "$bin" eval --hand "$out/$id-truth$k" --data "$data" --thresholds "$out/$id-$k.json" \
+      --draw "$out/overlays/$id/calibrated" >/dev/null
   done
 }
 each_venue venue_rows 9
