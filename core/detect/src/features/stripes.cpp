@@ -510,18 +510,22 @@ void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segm
   work.candidates.clear();
   if (!bgr8.empty() && bgr8.type() == CV_8UC3 && field) {
     const FieldPixel pixel = stripe_pixel(field);
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-      if (segments[i].label != Label::Marking) continue;
+    // Segment i a candidate when its profiles measure a stripe (of the shape asked for) whose
+    // paint lies on the field.
+    const auto add_measured = [&](std::size_t i, bool twin_only) {
       Candidate c;
       c.segment = i;
+      c.twin_only = twin_only;
       if (!measure_candidate(bgr8, pixel, segments[i], params, thin, work, c) || (shape == Shape::Straight && !straight(c)))
-        continue;
+        return;
       if (on_field) {
         const Marking centre = centre_of(segments[i], c);
-        if (lies_above(0.5f * (centre.x0 + centre.x1), 0.5f * (centre.y0 + centre.y1), *on_field)) continue;
+        if (lies_above(0.5f * (centre.x0 + centre.x1), 0.5f * (centre.y0 + centre.y1), *on_field)) return;
       }
       work.candidates.push_back(c);
-    }
+    };
+    for (std::size_t i = 0; i < segments.size(); ++i)
+      if (segments[i].label == Label::Marking) add_measured(i, false);
     // Lines along the field's edge: segments the colours left as none (edge_lines.hpp); the
     // candidates become markings in pair_stripes.
     if (on_field && !on_field->empty())
@@ -542,16 +546,7 @@ void find_stripes(const cv::Mat& bgr8, const FieldColours& field, std::span<Segm
       if (segments[i].label != Label::None || !near_a_stripe(segments[i], segments, stripes(), params, bgr8.rows) ||
           std::ranges::any_of(stripes(), [i](const Candidate& c) { return c.segment == i; }))
         continue;
-      Candidate c;
-      c.segment = i;
-      c.twin_only = true;
-      if (!measure_candidate(bgr8, pixel, segments[i], params, thin, work, c) || (shape == Shape::Straight && !straight(c)))
-        continue;
-      if (on_field) {
-        const Marking centre = centre_of(segments[i], c);
-        if (lies_above(0.5f * (centre.x0 + centre.x1), 0.5f * (centre.y0 + centre.y1), *on_field)) continue;
-      }
-      work.candidates.push_back(c);
+      add_measured(i, true);
     }
   }
   pair_stripes(segments, work.candidates, params, out);
