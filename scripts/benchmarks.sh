@@ -219,7 +219,7 @@ for set_id, title, label, folder, options in sets:
                      f"checked square, everything projected), against without: ground/features = "
                      f"{worse(j['ground_over_features'])} (target <= 1.1)."
                      if "ground_over_features" in j else "")
-                  + (f" The coarse pass (coarse_scale 3, the lower half drawn again at a third of the size, as calibration chooses it) against one "
+                  + (f" The coarse pass (coarse_scale 3, the lower 0.7 drawn again at a third of the size and its upper 0.2 keeping the lines it resolves, as calibration chooses it) against one "
                      f"scale: coarse/fieldlines = {worse(j['coarse_over_plain'])} (target <= 1.25)."
                      if "coarse_over_plain" in j else "")
                   + (f" The thin-line pass (thin_reach 2 over the upper 0.6, as calibration sets it): thin/fieldlines = "

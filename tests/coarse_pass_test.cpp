@@ -56,10 +56,12 @@ float along_edge(const std::vector<Segment>& segments, float y0) {
   return total;
 }
 
-std::vector<Segment> detect(const cv::Mat& frame, int coarse_scale, double coarse_from = 0.5) {
+std::vector<Segment> detect(const cv::Mat& frame, int coarse_scale, double coarse_from = 0.5,
+                            double coarse_twins_from = 1) {
   DetectorParams p;
   p.coarse_scale = coarse_scale;
   p.coarse_from = coarse_from;
+  p.coarse_twins_from = coarse_twins_from;
   LineDetector detector(p);
   return detector.detect(frame);
 }
@@ -102,6 +104,30 @@ TEST(CoarsePass, ItsSegmentsOnACurvedLineStayOnTheEdge) {
   }
   EXPECT_GT(along, 400) << "the edges are drawn";
   EXPECT_LE(worst, 3) << "a segment cuts across the curve";
+}
+
+// Above the near rows (coarse_twins_from to coarse_from), the coarse pass keeps the lines it
+// resolves, both edges drawn, and drops a segment with no such twin: on a line too narrow for
+// its scale it blurs both edges into one segment, off either (here: one edge alone, a white
+// board's foot). The wide line is the near one's, 24 px wide, raised to rows 180-212.
+TEST(CoarsePass, AboveTheNearRowsItKeepsTheLinesItResolves) {
+  const auto frame_with = [](bool line) {
+    cv::RNG rng(3);
+    cv::Mat clean = textured_turf(rng);
+    for (int x = 0; x < 640; ++x) {
+      const int top = static_cast<int>(180 + 0.05 * x) + rng.uniform(-3, 4);
+      for (int y = top; y < (line ? top + 24 : 480); ++y) clean.at<cv::Vec3b>(y, x) = {235, 240, 235};
+    }
+    return test::noisy(clean);
+  };
+  const cv::Mat line = frame_with(true), board = frame_with(false);
+  const auto edges = [](const std::vector<Segment>& segments) {
+    return along_edge(segments, 181) + along_edge(segments, 205);
+  };
+  EXPECT_LT(edges(detect(line, 3)), 100) << "above coarse_from the full scale alone breaks up";
+  EXPECT_GT(edges(detect(line, 3, 0.5, 0.25)), 600) << "the coarse pass draws the line's edges end to end";
+  EXPECT_GT(along_edge(detect(board, 3, 0.25), 181), 300) << "a coarse pass from there draws the board's foot";
+  EXPECT_LT(along_edge(detect(board, 3, 0.5, 0.25), 181), 100) << "which has no twin, and is dropped";
 }
 
 // A painted line's two edges, sharp at the full scale, stay two segments with the coarse pass:

@@ -268,7 +268,7 @@ TEST(DetectAllocations, NoneWithStripes) {
 }
 
 // The coarse pass (DetectorParams::coarse_scale) downsamples into its own reused band and engine:
-// still nothing, alone and with every feature stage after it.
+// still nothing, alone and with every feature stage after it (and its twins' band).
 TEST(DetectAllocations, NoneWithTheCoarsePass) {
   const auto [frames, names] = synthetic_frames(4, 5);
   DetectorParams coarse;
@@ -277,6 +277,7 @@ TEST(DetectAllocations, NoneWithTheCoarsePass) {
   expect_warm_detect_allocates_nothing(frames, names, coarse);
   DetectorParams every = all_features();
   every.coarse_scale = 3;
+  every.coarse_twins_from = 0.2;  // the band above coarse_from keeping the lines it resolves
   expect_warm_detect_allocates_nothing(frames, names, every);
 }
 

@@ -37,7 +37,8 @@ our rows may take more with --detector-threads):
   fieldlines+junctions, fieldlines+features, fieldlines+ground
               the same with the per-frame light adaptation, with the stripes stage (every
               marking checked and measured across its width), with the coarse pass (the lower
-              half drawn again at a third of the size: coarse_scale 3), with the thin-line pass
+              0.7 drawn again at a third of the size: coarse_scale 3, its upper 0.2 keeping the
+              lines it resolves), with the thin-line pass
               (the upper 0.6 drawn again on lines' ridges: thin_reach 2), with both passes, with
               the stripes, field boundary
               and L/T/X junctions (the features of the detector's own drawing), or with every

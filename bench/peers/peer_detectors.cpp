@@ -44,11 +44,13 @@ std::vector<TimedDetector> make_timed_detectors(const DetectorParams& params, co
        std::make_shared<LineDetector>(striped, thresholds));
 
   // The coarse pass (DetectorParams::coarse_scale) as calibration chooses it where near lines
-  // break up (DetectorCalibrationParams: the lower half drawn again at a third of the size).
+  // break up (DetectorCalibrationParams: the lower 0.7 drawn again at a third of the size, the
+  // upper 0.2 of it keeping the lines it resolves).
   DetectorParams coarse = params;
   coarse.coarse_scale = 3;
   coarse.coarse_from = 0.5;
-  ours("fieldlines+coarse", "the same with the coarse pass (the lower half again at a third of the size)",
+  coarse.coarse_twins_from = 0.3;
+  ours("fieldlines+coarse", "the same with the coarse pass (the lower 0.7 again at a third of the size)",
        std::make_shared<LineDetector>(coarse, thresholds));
 
   // The thin-line pass (DetectorParams::thin_reach) as calibration turns it on: the upper 0.6

@@ -12,6 +12,7 @@
 #include "box_downsample.hpp"
 #include "elsed/elsed.hpp"
 #include "features/field_pixel.hpp"
+#include "features/paint_profile.hpp"
 #include "fieldlines/detect/error.hpp"
 #include "fieldlines/detect/centre_circle.hpp"
 #include "fieldlines/detect/intersections.hpp"
@@ -187,6 +188,30 @@ bool covered(const Segment& s, std::span<const Segment> fine, float reach) {
   return std::count(near.begin(), near.end(), true) >= 3;
 }
 
+// Whether among `coarse` (full-scale pixels, drawn at `scale`) lies the other edge of the line `s`
+// is one edge of: at three of five points along s, a parallel segment (within 5 degrees, beside
+// it) whose colour gradient faces s's, at least two coarse pixels off and no farther than the
+// stripes' widest paint at its row (stripes.hpp) and a coarse pixel.
+bool has_twin(const Segment& s, std::span<const Segment> coarse, float scale, const DetectorParams& params, int rows) {
+  const float sx = s.x1 - s.x0, sy = s.y1 - s.y0, length = std::hypot(sx, sy);
+  if (!(length > 0)) return false;
+  const float nx = -sy / length, ny = sx / length;
+  const auto brighter_left = [&](const Segment& t) {
+    float along = 0;
+    for (int c = 0; c < 3; ++c) along += t.grad_x[c] * nx + t.grad_y[c] * ny;
+    return along >= 0;
+  };
+  const bool own = brighter_left(s);
+  const float widest = static_cast<float>(params.stripe_max_width) * paint::width_scale(0.5f * (s.y0 + s.y1), rows);
+  const float nearest = 2 * scale, reach = std::max(widest, nearest) + scale;
+  std::array<bool, 5> twin{};
+  parallel_beside(s, coarse, reach, [&](int k, float off, const Segment& t) {
+    // The paint lies between the two: on s's bright side, which is t's bright side too.
+    if (&t != &s && std::abs(off) >= nearest && brighter_left(t) != own && (off > 0) == own) twin[k] = true;
+  });
+  return std::count(twin.begin(), twin.end(), true) >= 3;
+}
+
 // The rows [0, end) of a frame `rows` high that the thin-line pass draws (thin_to of them).
 int thin_band_end(const DetectorParams& params, int rows) {
   return std::clamp(static_cast<int>(std::lround(params.thin_to * rows)), 0, rows);
@@ -279,7 +304,9 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
 // along one already there. Every buffer is reused: no allocation once warm.
 void LineDetector::add_coarse(const cv::Mat& bgr, int gradient_threshold, std::vector<Segment>& out) {
   const int f = params_.coarse_scale;
-  const int top = std::clamp(static_cast<int>(std::lround(params_.coarse_from * bgr.rows)), 0, bgr.rows);
+  const auto row_of = [&](double share) { return std::clamp(static_cast<int>(std::lround(share * bgr.rows)), 0, bgr.rows); };
+  // The band starts on a whole cell of the frame's grid: where its top lies does not move the cells.
+  const int alone = row_of(params_.coarse_from), top = std::min(alone, row_of(params_.coarse_twins_from)) / f * f;
   const int w = bgr.cols / f, h = (bgr.rows - top) / f;
   if (w < 3 || h < 3) return;
   box_downsample(bgr(cv::Rect(0, top, w * f, h * f)), f, impl_->coarse_bgr);
@@ -287,13 +314,16 @@ void LineDetector::add_coarse(const cv::Mat& bgr, int gradient_threshold, std::v
   coarse.clear();
   impl_->coarse_engine.run(impl_->coarse_bgr, impl_->coarse_params, gradient_threshold, coarse);
   const float scale = static_cast<float>(f), shift = 0.5f * static_cast<float>(f - 1);
-  const std::size_t fine = out.size();
-  for (Segment s : coarse) {
+  for (Segment& s : coarse) {
     s.x0 = scale * s.x0 + shift, s.x1 = scale * s.x1 + shift;
     s.y0 = scale * s.y0 + shift + static_cast<float>(top), s.y1 = scale * s.y1 + shift + static_cast<float>(top);
     s.saliency *= scale;  // validated pixels, counted at the full scale
-    if (!covered(s, {out.data(), fine}, scale + 0.5f)) out.push_back(s);
   }
+  const std::size_t fine = out.size();
+  for (const Segment& s : coarse)
+    if ((0.5f * (s.y0 + s.y1) >= static_cast<float>(alone) || has_twin(s, coarse, scale, params_, bgr.rows)) &&
+        !covered(s, {out.data(), fine}, scale + 0.5f))
+      out.push_back(s);
 }
 
 // The thin-line pass: the rows above thin_to drawn on the lines' ridge (ridge_pass.hpp), which

@@ -126,6 +126,7 @@ DetectorParams calibrated_detector(const DetectorParams& given, const FieldContr
   if (contrast.coarse_gain() >= params.min_coarse_gain) {
     d.coarse_scale = params.coarse_scale;
     d.coarse_from = params.coarse_from;
+    d.coarse_twins_from = params.coarse_twins_from;
   }
   if (!params.follow_contrast) return d;
   const double wanted = std::max(params.paint_share * contrast.paint(), params.texture_margin * contrast.texture());
@@ -149,6 +150,7 @@ nlohmann::json detector_provenance(const FieldContrast& contrast, const Detector
           {"min_line_length", chosen.min_line_length},
           {"coarse_gain", contrast.coarse_gain()},
           {"coarse_scale", chosen.coarse_scale},
+          {"coarse_twins_from", chosen.coarse_twins_from},
           {"thin_reach", chosen.thin_reach},
           {"stripes", chosen.stripes}};
 }

@@ -70,6 +70,12 @@ struct DetectorParams {
   // none of them lies along it (detector.cpp). 1: off, the method's one scale.
   int coarse_scale = 1;
   double coarse_from = 0.5;
+  // ...and from coarse_twins_from down to coarse_from, the lines the coarse scale resolves: a
+  // coarse segment there joins only when it has a twin, the line's other edge, drawn too (at
+  // least two coarse pixels off, facing it, no farther than the stripes' widest paint there).
+  // Above the near rows a line is a few coarse pixels wide at most, and the coarse scale blurs
+  // its two edges into one segment off both. 1 (or anything at or below coarse_from): none.
+  double coarse_twins_from = 1;
   // Far rows' lines a pixel or two wide give the gradient two edges so close that smoothing
   // blurs them into each other; the line itself is brighter than both sides. With thin_reach
   // above 0, the rows above thin_to (a share of the height) are drawn a second time on that
@@ -102,7 +108,7 @@ struct ParamSpec {
   bool in_files = true;     // written into and read from thresholds and project files
 };
 
-inline constexpr std::array<ParamSpec, 30> kDetectorParamSpecs{{
+inline constexpr std::array<ParamSpec, 31> kDetectorParamSpecs{{
     {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
      .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
     {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
@@ -165,6 +171,10 @@ inline constexpr std::array<ParamSpec, 30> kDetectorParamSpecs{{
      .slider = {1, 4}},
     {.name = "coarse_from", .member = &DetectorParams::coarse_from, .range = {0, 1},
      .help = "the coarse pass covers the rows below this share of the height", .slider = {0, 1}},
+    {.name = "coarse_twins_from", .member = &DetectorParams::coarse_twins_from, .range = {0, 1},
+     .help = "above coarse_from, from this share of the height down the coarse pass keeps lines it resolves "
+             "(both edges drawn); 1: none",
+     .slider = {0, 1}},
     {.name = "thin_reach", .member = &DetectorParams::thin_reach, .range = {0, 8}, .unit = "px",
      .help = "also draw lines up to 2k - 1 px wide along their centres, above thin_to (far, thin lines); 0: off",
      .slider = {0, 4}},
