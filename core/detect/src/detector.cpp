@@ -169,22 +169,32 @@ void parallel_beside(const Segment& s, std::span<const Segment> fine, float reac
   }
 }
 
+// A segment's unit normal (its direction turned a quarter left), and which side of it a
+// segment's colour gradient makes the brighter one.
+struct Normal {
+  float nx, ny;
+  bool brighter(const Segment& t) const {  // t brightens towards the normal
+    float along = 0;
+    for (int c = 0; c < 3; ++c) along += t.grad_x[c] * nx + t.grad_y[c] * ny;
+    return along >= 0;
+  }
+};
+std::optional<Normal> normal_of(const Segment& s) {
+  const float sx = s.x1 - s.x0, sy = s.y1 - s.y0, length = std::hypot(sx, sy);
+  if (!(length > 0)) return std::nullopt;
+  return Normal{-sy / length, sx / length};
+}
+
 // Whether some of `fine` lies along `s` (a coarse segment): at least three of five points along
 // s lie within `reach` px of a fine segment parallel to it (within 5 degrees), between that
 // one's ends, with its colour gradient on the same side. One painted edge, one segment: the
 // full scale's is the more exact, the coarse one fills only where it has none.
 bool covered(const Segment& s, std::span<const Segment> fine, float reach) {
-  const float sx = s.x1 - s.x0, sy = s.y1 - s.y0, length = std::hypot(sx, sy);
-  if (!(length > 0)) return true;
-  const float nx = -sy / length, ny = sx / length;
-  const auto side = [&](const Segment& t) {
-    float along = 0;
-    for (int c = 0; c < 3; ++c) along += t.grad_x[c] * nx + t.grad_y[c] * ny;
-    return along >= 0;
-  };
-  const bool s_side = side(s);
+  const std::optional<Normal> n = normal_of(s);
+  if (!n) return true;
+  const bool own = n->brighter(s);
   std::array<bool, 5> near{};
-  parallel_beside(s, fine, reach, [&](int k, float, const Segment& t) { near[k] = near[k] || side(t) == s_side; });
+  parallel_beside(s, fine, reach, [&](int k, float, const Segment& t) { near[k] = near[k] || n->brighter(t) == own; });
   return std::count(near.begin(), near.end(), true) >= 3;
 }
 
@@ -193,21 +203,15 @@ bool covered(const Segment& s, std::span<const Segment> fine, float reach) {
 // it) whose colour gradient faces s's, at least two coarse pixels off and no farther than the
 // stripes' widest paint at its row (stripes.hpp) and a coarse pixel.
 bool has_twin(const Segment& s, std::span<const Segment> coarse, float scale, const DetectorParams& params, int rows) {
-  const float sx = s.x1 - s.x0, sy = s.y1 - s.y0, length = std::hypot(sx, sy);
-  if (!(length > 0)) return false;
-  const float nx = -sy / length, ny = sx / length;
-  const auto brighter_left = [&](const Segment& t) {
-    float along = 0;
-    for (int c = 0; c < 3; ++c) along += t.grad_x[c] * nx + t.grad_y[c] * ny;
-    return along >= 0;
-  };
-  const bool own = brighter_left(s);
+  const std::optional<Normal> n = normal_of(s);
+  if (!n) return false;
+  const bool own = n->brighter(s);
   const float widest = static_cast<float>(params.stripe_max_width) * paint::width_scale(0.5f * (s.y0 + s.y1), rows);
   const float nearest = 2 * scale, reach = std::max(widest, nearest) + scale;
   std::array<bool, 5> twin{};
   parallel_beside(s, coarse, reach, [&](int k, float off, const Segment& t) {
     // The paint lies between the two: on s's bright side, which is t's bright side too.
-    if (&t != &s && std::abs(off) >= nearest && brighter_left(t) != own && (off > 0) == own) twin[k] = true;
+    if (&t != &s && std::abs(off) >= nearest && n->brighter(t) != own && (off > 0) == own) twin[k] = true;
   });
   return std::count(twin.begin(), twin.end(), true) >= 3;
 }
