@@ -407,12 +407,7 @@ int cmd_eval_gt(const Args& args) {
       if (draw) {
         const fs::path folder = *draw / item.folder;
         make_overlay_folder(folder);
-        const std::string stem = item.image.stem().string();
-        fs::path out = folder / (stem + ".png");
-        std::error_code ec;
-        for (int k = 2; drawn.count(out) || fs::equivalent(out, item.image, ec); ++k)
-          out = folder / (stem + "-" + std::to_string(k) + ".png");
-        drawn.insert(out);
+        const fs::path out = next_overlay_path(folder, item.image, drawn, {canonical_path(item.image)});
         write_overlay(out, draw_eval_overlay(img, segments, detector.field_boundary(), truth_edges, item.boundary_rows));
       }
       synth::FeatureScore feature_score;

@@ -21,24 +21,27 @@ void make_overlay_folder(const fs::path& dir) {
     throw Error("--draw " + dir.string() + ": cannot create the folder" + (ec ? " (" + ec.message() + ")" : ""));
 }
 
+fs::path canonical_path(const fs::path& path) {
+  std::error_code ec;
+  const fs::path c = fs::weakly_canonical(path, ec);
+  return ec ? fs::absolute(path, ec).lexically_normal() : c;
+}
+
+fs::path next_overlay_path(const fs::path& dir, const fs::path& image, std::set<fs::path>& used,
+                           const std::set<fs::path>& inputs) {
+  const std::string stem = image.stem().string().empty() ? "image" : image.stem().string();
+  fs::path out = dir / (stem + ".png");
+  for (int k = 2; used.count(out) || inputs.count(canonical_path(out)); ++k)
+    out = dir / (stem + "-" + std::to_string(k) + ".png");
+  used.insert(out);
+  return out;
+}
+
 std::vector<fs::path> overlay_paths(const std::vector<fs::path>& images, const fs::path& dir) {
-  auto canonical = [](const fs::path& p) {
-    std::error_code ec;
-    const fs::path c = fs::weakly_canonical(p, ec);
-    return ec ? fs::absolute(p, ec).lexically_normal() : c;
-  };
-  std::set<fs::path> inputs;
-  for (const auto& p : images) inputs.insert(canonical(p));
-  std::set<std::string> used;
+  std::set<fs::path> inputs, used;
+  for (const auto& p : images) inputs.insert(canonical_path(p));
   std::vector<fs::path> out;
-  for (const auto& p : images) {
-    const std::string stem = p.stem().string().empty() ? "image" : p.stem().string();
-    std::string name = stem + ".png";
-    for (int k = 2; used.count(name) || inputs.count(canonical(dir / name)); ++k)
-      name = stem + "-" + std::to_string(k) + ".png";
-    used.insert(name);
-    out.push_back(dir / name);
-  }
+  for (const auto& p : images) out.push_back(next_overlay_path(dir, p, used, inputs));
   return out;
 }
 

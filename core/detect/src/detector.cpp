@@ -225,7 +225,7 @@ int thin_band_end(const DetectorParams& params, int rows) {
 // points along s, parallel segments (within 5 degrees, between their ends) lie within `reach` px
 // on both sides of it, or one within a pixel of it.
 bool edges_held(const Segment& s, std::span<const Segment> fine, float reach) {
-  if (!(std::hypot(s.x1 - s.x0, s.y1 - s.y0) > 0)) return true;
+  if (!normal_of(s)) return true;
   std::array<bool, 5> left{}, right{};
   parallel_beside(s, fine, reach, [&](int k, float off, const Segment&) {
     if (std::abs(off) <= 1) left[k] = right[k] = true;
