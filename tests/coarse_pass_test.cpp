@@ -2,6 +2,7 @@
 // ragged edges break the full scale's drawing, gets segments along its edges; a far line one
 // pixel wide, above the coarse band, is found as before; one painted edge stays one segment.
 #include <cmath>
+#include <cstdlib>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -169,6 +170,31 @@ TEST(CoarsePass, CalibrationChoosesItWhereNearLinesBreakUp) {
   FieldContrast unmeasured(rule);
   unmeasured.add_image(textured_turf_with_a_near_line());
   EXPECT_EQ(unmeasured.coarse_gain(), 0);
+}
+
+// This machine may take the AVX2 kernel for cells of 3 px; the portable one (what an arm64 robot
+// runs) must average them to the same bits: the same segments on textured turf, on frames whose
+// coarse width is whole blocks of 64 cells and not (the kernel leaves the rest to the other).
+TEST(CoarsePass, BaselineCellsAverageWhatAvx2Averages) {
+  const cv::Mat frame = textured_turf_with_a_near_line();
+  DetectorParams p;
+  p.coarse_scale = 3;
+  p.coarse_from = 0.3;
+  for (const int width : {640, 613, 576, 200, 9}) {
+    const cv::Mat cropped = frame(cv::Rect(0, 0, width, 480)).clone();
+    LineDetector fast(p);
+    ::setenv("FIELDLINES_NO_AVX2", "1", 1);
+    LineDetector baseline(p);  // reads the switch when built
+    ::unsetenv("FIELDLINES_NO_AVX2");
+    const std::vector<Segment> a = fast.detect(cropped), b = baseline.detect(cropped);
+    ASSERT_EQ(a.size(), b.size()) << width << " px";
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a[i].x0, b[i].x0) << width << " px, segment " << i;
+      EXPECT_EQ(a[i].y1, b[i].y1);
+      EXPECT_EQ(a[i].saliency, b[i].saliency);
+      EXPECT_EQ(a[i].grad_x, b[i].grad_x);
+    }
+  }
 }
 
 TEST(CoarsePass, BandsTooSmallForTheScaleAreLeftOut) {

@@ -26,6 +26,7 @@ struct [[gnu::visibility("hidden")]] LineDetector::Impl {
   ElsedEngine coarse_engine;    // the coarse pass (DetectorParams::coarse_scale)
   DetectorParams coarse_params;  // the parameters scaled to it, set with the parameters
   cv::Mat coarse_bgr;           // the band it reads, downsampled
+  bool coarse_avx2 = elsed::avx2::wanted();  // box_downsample's kernel, chosen when built
   std::vector<Segment> coarse;  // its segments, in full-scale pixels
   ElsedEngine thin_engine;      // the thin-line pass (DetectorParams::thin_reach)
   std::vector<Segment> thin;    // its segments
@@ -313,7 +314,7 @@ void LineDetector::add_coarse(const cv::Mat& bgr, int gradient_threshold, std::v
   const int alone = row_of(params_.coarse_from), top = std::min(alone, row_of(params_.coarse_twins_from)) / f * f;
   const int w = bgr.cols / f, h = (bgr.rows - top) / f;
   if (w < 3 || h < 3) return;
-  box_downsample(bgr(cv::Rect(0, top, w * f, h * f)), f, impl_->coarse_bgr);
+  box_downsample(bgr(cv::Rect(0, top, w * f, h * f)), f, impl_->coarse_bgr, impl_->coarse_avx2);
   std::vector<Segment>& coarse = impl_->coarse;
   coarse.clear();
   impl_->coarse_engine.run(impl_->coarse_bgr, impl_->coarse_params, gradient_threshold, coarse);
