@@ -137,11 +137,17 @@ TEST(ThinPass, BaselineKernelsDrawWhatAvx2Draws) {
 }
 
 // A detector reused on frames of other sizes clears what the last frame left: the segments are
-// those of a fresh detector.
+// those of a fresh detector. The widths are no multiples of each other, so that what one frame
+// wrote lies elsewhere in the other's rows: beside one frame's line, another's many lines left
+// there would be drawn on.
 TEST(ThinPass, AReusedDetectorDrawsWhatAFreshOneDraws) {
   LineDetector reused(venue_detector(2));
   const cv::Mat wall = far_line(true), small = far_line(true)(cv::Rect(0, 0, 320, 240)).clone();
-  for (const cv::Mat* f : {&wall, &small, &wall}) {
+  const cv::Mat odd = far_line(true)(cv::Rect(17, 0, 613, 300)).clone();
+  cv::Mat lines(480, 640, CV_8UC3, test::kTurf);
+  for (int y = 20; y < 280; y += 9) cv::line(lines, {0, y}, {639, y + 40}, kFaintPaint, 2, cv::LINE_AA);
+  const cv::Mat many = test::noisy(lines);
+  for (const cv::Mat* f : {&wall, &small, &wall, &many, &odd, &small, &many, &odd, &wall}) {
     LineDetector fresh(venue_detector(2));
     const std::vector<Segment> a = reused.detect(*f), b = fresh.detect(*f);
     ASSERT_EQ(a.size(), b.size()) << f->cols;

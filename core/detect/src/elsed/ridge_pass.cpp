@@ -79,15 +79,11 @@ constexpr RowFn kRows[kMaxRidgeReach] = {ridge_row_r<1>, ridge_row_r<2>, ridge_r
 }  // namespace
 
 void ready_ridge_maps(int width, int rows, GradientMaps& maps, std::vector<RidgeBlocks>& blocks) {
-  const std::size_t n = static_cast<std::size_t>(std::max(width, 0)) * static_cast<std::size_t>(std::max(rows, 0));
-  if (maps.width != width || maps.height != rows || maps.mag.size() != n) {
-    maps.width = width, maps.height = rows;
-    maps.dx.assign(n, 0);
-    maps.dy.assign(n, 0);
-    maps.mag.assign(n, 0);
-    maps.state.assign(n, kVertical);
-  } else {
-    const auto w = static_cast<std::size_t>(width);
+  // Only the blocks the last frame wrote hold anything: cleared at that frame's width, the maps
+  // are clean everywhere, and a frame of another size resizes them, clearing nothing else (a
+  // camera's stream keeps its size; a set of frames of two sizes cleared all of both before).
+  if (maps.width > 0) {
+    const auto w = static_cast<std::size_t>(maps.width);
     for (const RidgeBlocks& band : blocks)
       for (std::size_t k = 0; k < band.count; ++k) {
         const std::size_t from = band.starts[k], to = std::min<std::size_t>(from + kRidgeBlock, (from / w + 1) * w);
@@ -98,6 +94,12 @@ void ready_ridge_maps(int width, int rows, GradientMaps& maps, std::vector<Ridge
       }
   }
   for (RidgeBlocks& band : blocks) band.count = 0;
+  const std::size_t n = static_cast<std::size_t>(std::max(width, 0)) * static_cast<std::size_t>(std::max(rows, 0));
+  maps.width = width, maps.height = rows;
+  maps.dx.resize(n, 0);  // grown: the new pixels clean too
+  maps.dy.resize(n, 0);
+  maps.mag.resize(n, 0);
+  maps.state.resize(n, kVertical);
 }
 
 void ridge_row(const std::uint8_t* const* rows, int width, const RidgeTarget& target, const RidgeRow& out) {

@@ -51,8 +51,9 @@ struct RidgeTarget {
   std::vector<RidgeBlocks>* blocks = nullptr;  // one per row band, sized by the pass
 };
 
-// Readies `maps` and `blocks` for a frame: a band `rows` high of a frame `width` wide, cleared
-// whole when its size changed, otherwise only the blocks the last frame listed; every list emptied.
+// Readies `maps` and `blocks` for a frame: a band `rows` high of a frame `width` wide. Only the
+// blocks the last frame listed are cleared (nothing else was written), then the maps resized;
+// every list emptied.
 void ready_ridge_maps(int width, int rows, GradientMaps& maps, std::vector<RidgeBlocks>& blocks);
 // One ridge row from 2 reach + 1 rows of the smoothed grey (`rows[reach]` the row itself), each
 // `width` px; written and listed into `out`.
