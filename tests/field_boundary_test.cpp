@@ -335,6 +335,38 @@ TEST(FieldBoundary, SunAndShadeOnTheFieldKeepTheBoundaryAtItsEdge) {
   EXPECT_LT(right_one_colour, 70) << "the median's colour alone loses the sunlit columns";
 }
 
+// The turf at the field's far edge seen through a goal's net (Humanoid frame2150): above the
+// carpet's edge its colour drifts to a paler green (0.095 of chromaticity from the median, as
+// saturated as 0.78 of it) and back over 48 px, the turf's far edge 8 px on. 26 px of it lie out
+// of the field colour: the scan crosses them (shorter than the gap), and when the top settles
+// they read as a band without field, which the 8 px beyond do not pay for. Followed sample by
+// sample from the turf beyond (settle_chain_step), the drift is turf: the top stays at the far
+// edge. Camera noise of sd 1.5: a net's shade is smooth.
+TEST(FieldBoundary, TurfDriftingIntoAnotherLightStaysTheFields) {
+  cv::Mat img = field_frame();
+  const cv::Vec3f carpet(50, 140, 40), pale(65, 145, 55);  // B, G, R
+  constexpr int kRamp = 16, kPlateau = 16, kBeyond = 8, kTurf = 2 * kRamp + kPlateau + kBeyond;
+  for (int x = 0; x < 640; ++x)
+    for (int h = 0; h < kTurf; ++h) {
+      const float t = h < kRamp ? float(h) / kRamp : h < kRamp + kPlateau ? 1.f
+                                                   : std::max(0.f, 1.f - float(h - kRamp - kPlateau) / kRamp);
+      const cv::Vec3f c = carpet + (pale - carpet) * t;
+      above_the_edge(img, x, h, h + 1, cv::Scalar(c[0], c[1], c[2]));
+    }
+  cv::Mat noise(img.size(), CV_16SC3), wide;
+  cv::RNG(7).fill(noise, cv::RNG::NORMAL, 0, 1.5);
+  img.convertTo(wide, CV_16SC3);
+  wide += noise;
+  wide.convertTo(img, CV_8UC3);
+  fl::FieldBoundary chained, unchained;
+  fl::find_field_boundary(img, chained);
+  fl::FieldBoundaryParams off;
+  off.settle_chain_step = 0;
+  fl::find_field_boundary(img, unchained, off);
+  for (float x = 0; x < 640; x += 16) EXPECT_NEAR(chained.y_at(x), horizon(x) - kTurf, 4) << "x " << x;
+  EXPECT_GT(unchained.y_at(320), horizon(320) - kTurf + 30) << "without the chain the top settles below the drift";
+}
+
 // Skipping the samples between two field samples (max_jump) finds the tops that testing every
 // sample finds: on synthetic fields in every light and on random clutter (turf, paint, dark and
 // grey blocks, lines of every width, noise).

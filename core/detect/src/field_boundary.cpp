@@ -67,7 +67,8 @@ void hull_of_columns(FieldBoundary& out, const FieldBoundaryParams& params, floa
   out.points.resize(static_cast<std::size_t>(hi - lo + 1));
 }
 
-// The column's top, settled: scanning down from `top`, each field sample weighs +1 and a band
+// The column's top, settled: scanning down from `top`, each field sample (or turf chained from
+// one: FieldBoundaryParams::settle_chain_step) weighs +1 and a band
 // without field -cost per sample, when it is at least `band` px long, or `paint_band` px with at
 // least a third of it paint: a light floor strip before the next field behind this one reads as
 // paint, which the scan crosses (a painted line has this field beyond it, which pays for it).
@@ -77,13 +78,14 @@ void hull_of_columns(FieldBoundary& out, const FieldBoundaryParams& params, floa
 // once one more band inside the field (shorter than the gap) could no longer bring the weight
 // back below its least.
 int settle_top(const cv::Mat& bgr8, const FieldPixel& pixel, int x, int top, int bottom, int row_step, int band,
-               int paint_band, float cost, int gap) {
+               int paint_band, float cost, int gap, const FieldBoundaryParams& params) {
   const float give_up = cost * float(gap / row_step);
   float weight = 0, least = 0;
   int settled = top, bare = 0, painted = 0;  // the current band's samples without field
+  ChainedTurf turf(pixel, params.settle_chain_step, params.settle_chain_saturation);
   for (int y = top; y <= bottom; y += row_step) {
     const std::uint8_t* p = bgr8.ptr<std::uint8_t>(y) + 3 * x;
-    if (pixel.field(p)) {
+    if (turf.field(p)) {
       const bool floor_strip = top >= row_step && 2 * painted >= bare && (bare + painted) * row_step >= paint_band;
       if (bare * row_step >= band || floor_strip) weight -= cost * float(bare + painted);
       bare = painted = 0;
@@ -223,7 +225,7 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
       }
     }
     if (top >= 0) {
-      const int settled = settle_top(bgr8, pixel, x, top, from, row_step, band, paint_band, params.band_cost, gap);
+      const int settled = settle_top(bgr8, pixel, x, top, from, row_step, band, paint_band, params.band_cost, gap, params);
       s.top = settled == top ? edge_line_top(bgr8, pixel, x, top, row_step, edge_line) : settled;
     }
     return s;

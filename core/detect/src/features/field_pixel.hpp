@@ -46,6 +46,9 @@ class FieldPixel {
     const float r = bgr[2] / sum, g = bgr[1] / sum;
     return std::abs(r - r_) + std::abs(g - g_) <= tolerance_ || (turf_ && turf_->contains(r, g));
   }
+  bool bright_as_turf(float sum) const { return p_.brightness.contains(sum, sum_); }
+  float field_r() const { return r_; }  // the median's chromaticities
+  float field_g() const { return g_; }
   bool dark(const std::uint8_t* bgr) const {
     return float(bgr[0] + bgr[1] + bgr[2]) < p_.dark_brightness * sum_;
   }
@@ -59,6 +62,33 @@ class FieldPixel {
   float sum_, r_, g_;
   const TurfColours* turf_;
   float tolerance_;  // of the chromaticity from the median's
+};
+
+// Turf followed along a column, sample by sample: field(), or a sample as bright as turf, at least
+// `min_saturation` of the field colour's distance from grey, whose chromaticity lies within `step`
+// of the last such sample's. Turf in a light the frame's colours miss (seen through a goal's
+// net, a lit patch) changes colour gradually; a wall, a floor or paint beside it does not, and
+// are no nearer grey than turf only when green themselves.
+class ChainedTurf {
+ public:
+  ChainedTurf(const FieldPixel& pixel, float step, float min_saturation)
+      : pixel_(pixel), step_(step),
+        floor_(min_saturation * (std::abs(pixel.field_r() - 1.f / 3) + std::abs(pixel.field_g() - 1.f / 3))) {}
+  bool field(const std::uint8_t* bgr) {
+    const float sum = std::max(float(bgr[0] + bgr[1] + bgr[2]), 1.f);
+    const float r = bgr[2] / sum, g = bgr[1] / sum;
+    const bool turf = pixel_.field(bgr) ||
+                      (chained_ && pixel_.bright_as_turf(sum) && std::abs(r - 1.f / 3) + std::abs(g - 1.f / 3) >= floor_ &&
+                       std::abs(r - r_) + std::abs(g - g_) <= step_);
+    if (turf) chained_ = true, r_ = r, g_ = g;
+    return turf;
+  }
+
+ private:
+  const FieldPixel& pixel_;
+  float step_, floor_;
+  bool chained_ = false;  // a field sample was met: r_, g_ are the last turf sample's
+  float r_ = 0, g_ = 0;
 };
 
 }  // namespace fieldlines
