@@ -8,6 +8,7 @@
 
 #include "fieldlines/data/image_io.hpp"
 #include "fieldlines/detect/stripes.hpp"
+#include "fieldlines/train/detector_calibration.hpp"
 
 namespace fieldlines::studio {
 namespace {
@@ -26,14 +27,36 @@ std::vector<StripeVerdict> verdicts(StripeCheck& check, const cv::Mat& image, co
   return out;
 }
 
+// The detector for the venue the frames show, as `fieldlines calibrate` chooses it; an image that
+// cannot be read is skipped here (its detection says why). Counts the images in `measured`.
+DetectorParams chosen_detector(const std::vector<DetectionJob::Item>& items, const DetectorParams& given,
+                               const std::stop_token& stop, std::atomic<std::size_t>& measured) {
+  const DetectorCalibrationParams rule;
+  FieldContrast contrast(rule, given);
+  for (const DetectionJob::Item& item : items) {
+    if (stop.stop_requested()) break;
+    try {
+      contrast.add_image(load_image(item.path));
+    } catch (const std::exception&) {
+      // Unreadable: measured by no one; its detection below reports why.
+    }
+    ++measured;
+  }
+  return calibrated_detector(given, contrast, rule);
+}
+
 }  // namespace
 
 void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, const Thresholds& thresholds,
-                         const std::optional<GroundCamera>& camera) {
+                         const std::optional<GroundCamera>& camera, bool choose_detector) {
   total_ = items.size();
   done_ = 0;
-  job_.start([items = std::move(items), params, thresholds, camera](std::stop_token stop, const auto& report) {
-    const DetectorParams every = with_every_feature(params);
+  measured_ = choose_detector ? std::make_shared<std::atomic<std::size_t>>(0) : nullptr;
+  job_.start([items = std::move(items), params, thresholds, camera, measured = measured_](std::stop_token stop,
+                                                                                          const auto& report) {
+    std::optional<DetectorParams> chosen;
+    if (measured) chosen = chosen_detector(items, params, stop, *measured);
+    const DetectorParams every = with_every_feature(chosen.value_or(params));
     LineDetector detector(every, thresholds);  // throws on bad parameters (or camera): the job's error
     detector.set_find_field_boundary(true);
     detector.set_camera(camera);
@@ -43,6 +66,7 @@ void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, 
       if (stop.stop_requested()) break;
       DetectionResult r;
       r.image = item.image;
+      r.chosen_detector = chosen;
       try {
         const cv::Mat image = load_image(item.path);
         const auto t0 = std::chrono::steady_clock::now();

@@ -9,8 +9,10 @@
 // their geometry and colour gradients: ProjectDetection clears their labels, and predictions
 // are the thresholds' classify() of the cached features. So the studio's segments, labels and
 // predictions are the same with the stages on as off (tests/studio/project_detection_test.cpp).
+#include <atomic>
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +32,8 @@ struct DetectionResult {
   std::vector<StripeVerdict> stripes;
   double detect_ms = 0;           // detector time only (not file loading), feature stages included
   std::string error;              // non-empty when this image could not be loaded or detected
+  // The detector parameters it was detected with, when the job chose them from the frames.
+  std::optional<DetectorParams> chosen_detector;
 };
 
 class DetectionJob {
@@ -40,9 +44,11 @@ class DetectionJob {
   };
   // Starts on a worker thread; a running job is cancelled and joined first. The detector runs
   // with_every_feature(params) and finds the field boundary too; with `camera`, it also fits
-  // the centre circle on the turf (LineDetector::set_camera).
+  // the centre circle on the turf (LineDetector::set_camera). With `choose_detector`, every
+  // image is first measured and the detector chosen from them as `fieldlines calibrate` chooses
+  // it (calibrated_detector(params, ...), detector_calibration.hpp); each result says which.
   void start(std::vector<Item> items, const DetectorParams& params, const Thresholds& thresholds,
-             const std::optional<GroundCamera>& camera = std::nullopt);
+             const std::optional<GroundCamera>& camera = std::nullopt, bool choose_detector = false);
   void cancel() { job_.cancel(); }
   bool running() const { return job_.running(); }
   // Results finished since the last poll (UI thread, once per frame).
@@ -53,10 +59,14 @@ class DetectionJob {
 
   std::size_t total() const { return total_; }
   std::size_t done() const { return done_; }  // results polled so far
+  // While the job chooses the detector: the images measured so far (then total()); else total().
+  std::size_t measured() const { return measured_ ? measured_->load() : total_; }
+  bool measuring() const { return running() && measured() < total_; }
   float progress() const { return total_ ? static_cast<float>(done_) / static_cast<float>(total_) : 1.0f; }
 
  private:
   std::size_t total_ = 0, done_ = 0;
+  std::shared_ptr<std::atomic<std::size_t>> measured_;  // shared with the worker
   Job<DetectionResult, std::size_t> job_;
 };
 

@@ -8,11 +8,17 @@
 
 namespace fieldlines::studio {
 
-Project project_for_folder(const std::filesystem::path& folder, const std::filesystem::path& project_file) {
-  Project project;
+DetectorParams folder_detector() {
+  DetectorParams d;
   // The review proposes markings through the stripes check (proposal_gate.hpp), so the labels
   // and the thresholds trained on them are for a detector that runs it: the exported file says so.
-  project.detector.stripes = true;
+  d.stripes = true;
+  return d;
+}
+
+Project project_for_folder(const std::filesystem::path& folder, const std::filesystem::path& project_file) {
+  Project project;
+  project.detector = folder_detector();
   for (const auto& file : list_images(folder)) {
     std::error_code ec;
     const auto relative = std::filesystem::relative(file, project_file.parent_path(), ec);

@@ -15,9 +15,14 @@ struct OpenedProject {
   bool needs_detection = false;  // some images have no segments yet
 };
 
+// The detector a folder's new project starts with: the built-in one with the stripes stage on
+// (the review's proposals assume it). Its first detection chooses the venue's from the frames
+// (ProjectDetection::start).
+DetectorParams folder_detector();
+
 // A new project over the images directly inside `folder` (sorted, paths relative to the
-// project file's folder), nothing detected yet, the detector's stripes stage on (the review's
-// proposals assume it). Throws fieldlines::Error when there is no image.
+// project file's folder), nothing detected yet, folder_detector(). Throws fieldlines::Error when
+// there is no image.
 Project project_for_folder(const std::filesystem::path& folder, const std::filesystem::path& project_file);
 
 // Throws fieldlines::Error with a user-facing message for anything it cannot open.

@@ -1,6 +1,9 @@
 #include "gui/model/project_detection.hpp"
 
+#include <algorithm>
 #include <span>
+
+#include "gui/model/open_project.hpp"
 
 namespace fieldlines::studio {
 
@@ -8,6 +11,7 @@ std::string DetectionReport::summary() const {
   if (!error.empty()) return "detection could not start: " + error;
   if (detected == 0 && failed.empty()) return {};
   std::string out = "detected " + std::to_string(detected) + " image" + (detected == 1 ? "" : "s");
+  if (detector_chosen) out += " with the detector chosen from them";
   if (labels_kept + labels_lost > 0) {
     out += "; " + std::to_string(labels_kept) + " labels kept";
     if (labels_lost > 0) out += ", " + std::to_string(labels_lost) + " could not be re-attached";
@@ -19,6 +23,11 @@ std::string DetectionReport::summary() const {
 
 bool needs_detection(const ImageEntry& image) { return image.segments.empty() && image.detect_ms == 0; }
 
+bool chooses_detector(const Project& project) {
+  return !project.images.empty() && project.detector == folder_detector() &&
+         std::all_of(project.images.begin(), project.images.end(), [](const ImageEntry& e) { return needs_detection(e); });
+}
+
 void ProjectDetection::start(const Project& project, const std::filesystem::path& project_file, bool only_undetected,
                              const std::optional<GroundCamera>& camera) {
   report_ = {};
@@ -28,7 +37,7 @@ void ProjectDetection::start(const Project& project, const std::filesystem::path
       items.push_back({i, Project::resolve(project_file, project.images[i].path)});
     }
   }
-  job_.start(std::move(items), project.detector, project.thresholds, camera);
+  job_.start(std::move(items), project.detector, project.thresholds, camera, chooses_detector(project));
 }
 
 const std::vector<std::size_t>& ProjectDetection::poll(Project& project) {
@@ -41,6 +50,10 @@ const std::vector<std::size_t>& ProjectDetection::poll(Project& project) {
     if (!r.error.empty()) {
       report_.failed.emplace_back(r.image, r.error);
       continue;
+    }
+    if (r.chosen_detector && !(*r.chosen_detector == project.detector)) {
+      project.detector = *r.chosen_detector;  // what the exported file will run
+      report_.detector_chosen = true;
     }
     // Human labels move to the new segments that match the old ones (the rest are Unlabelled).
     for (Segment& s : r.segments) s.label = Label::Unlabelled;

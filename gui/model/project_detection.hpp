@@ -21,6 +21,7 @@ namespace fieldlines::studio {
 // failed (unreadable or corrupt), each with its reason, and why the whole job could not run.
 struct DetectionReport {
   std::size_t detected = 0;
+  bool detector_chosen = false;  // the project's detector was chosen from its frames
   std::size_t labels_kept = 0, labels_lost = 0;
   std::vector<std::pair<std::size_t, std::string>> failed;  // image index, reason
   std::string error;  // the job could not start (e.g. bad detector parameters)
@@ -30,10 +31,16 @@ struct DetectionReport {
 // An image whose segments were never detected (no segments and no detection time).
 bool needs_detection(const ImageEntry& image);
 
+// Whether the project is a folder's new one: nothing detected, nothing labelled, the folder's
+// detector (open_project.hpp). Its detector is chosen from its frames as `fieldlines calibrate`
+// chooses it: the built-in one draws a half to three quarters of a real field's lines.
+bool chooses_detector(const Project& project);
+
 class ProjectDetection {
  public:
   // Detects the project's images (only those never detected, or all) with its detector
-  // parameters and thresholds; a running detection is replaced.
+  // parameters and thresholds; a running detection is replaced. A folder's new project
+  // (chooses_detector) first has its detector chosen from its frames, which poll() adopts.
   // `camera`: the robot's, when known (the centre circle is also fitted on the turf).
   void start(const Project& project, const std::filesystem::path& project_file, bool only_undetected,
              const std::optional<GroundCamera>& camera = std::nullopt);

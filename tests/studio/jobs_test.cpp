@@ -20,10 +20,13 @@
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/data/project.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/train/detector_calibration.hpp"
 #include "fixtures.hpp"
 #include "tests/painted_field.hpp"
 #include "gui/model/figures.hpp"
 #include "gui/model/job.hpp"
+#include "gui/model/open_project.hpp"
+#include "gui/model/project_detection.hpp"
 #include "gui/model/message_queue.hpp"
 #include "gui/model/studio_controller.hpp"
 #include "gui/model/training_job.hpp"
@@ -396,6 +399,53 @@ TEST(DetectionJob, TheRobotsCameraFitsTheCircleOnTheTurf) {
     ASSERT_EQ(c.detection().done(), 1u);
     EXPECT_EQ(c.field_features().ellipses.size(), known ? 1u : 0u);
   }
+}
+
+// A folder's new project has its detector chosen from its frames at its first detection, as
+// `fieldlines calibrate` chooses it (the built-in one draws a half to three quarters of a real
+// field's lines); the project keeps it, and the exported file runs it. A project once detected,
+// or with a detector of its own, keeps its detector.
+TEST(DetectionJob, AFolderProjectsFirstDetectionChoosesTheDetectorFromItsFrames) {
+  studio_test::TempDir dir("detect-choose");
+  const std::filesystem::path frames = dir.path() / "frames";
+  std::filesystem::create_directories(frames);
+  std::vector<cv::Mat> images;
+  for (int i = 0; i < 3; ++i) {
+    fieldlines::Segment line;
+    line.x0 = 20, line.y0 = 100.0f + 30 * i, line.x1 = 600, line.y1 = 140.0f + 30 * i;
+    images.push_back(fieldlines::test::noisy(studio_test::field_image(640, 480, {line})));
+    cv::imwrite((frames / ("f" + std::to_string(i) + ".png")).string(), images.back());
+  }
+  fs::OpenedProject opened = fs::open_project(frames);
+  ASSERT_TRUE(fs::chooses_detector(opened.project));
+  fs::StudioController c(std::move(opened.project), opened.file);
+  c.detect_all(true);
+  c.detection().wait();
+  c.poll();
+  const fieldlines::DetectorCalibrationParams rule;
+  fieldlines::FieldContrast contrast(rule, fs::folder_detector());
+  for (const cv::Mat& image : images) contrast.add_image(image);
+  const fieldlines::DetectorParams chosen = fieldlines::calibrated_detector(fs::folder_detector(), contrast, rule);
+  ASSERT_FALSE(chosen == fs::folder_detector());
+  EXPECT_TRUE(c.project().detector == chosen);
+  EXPECT_TRUE(fieldlines::Project::load(opened.file).detector == chosen) << "saved with the project";
+  EXPECT_NE(c.detection_report().summary().find("with the detector chosen from them"), std::string::npos)
+      << c.detection_report().summary();
+  EXPECT_EQ(c.detection().measured(), 3u);
+
+  // Detected once: detected again with the same detector, whatever it is.
+  EXPECT_FALSE(fs::chooses_detector(c.project()));
+  fieldlines::DetectorParams own = c.project().detector;
+  own.min_line_length = 30;
+  c.set_detector_params(own);
+  c.detect_all(false);
+  c.detection().wait();
+  c.poll();
+  EXPECT_TRUE(c.project().detector == own);
+  // A folder project whose detector was set before its first detection keeps it too.
+  fieldlines::Project fresh = fs::project_for_folder(frames, opened.file);
+  fresh.detector.gaussian_kernel = 3;
+  EXPECT_FALSE(fs::chooses_detector(fresh));
 }
 
 TEST(DetectionJob, CorruptImageIsReportedByNameAndTheOthersAreDetected) {
