@@ -67,8 +67,8 @@ class FieldPixel {
 // Turf followed along a column, sample by sample: field(), or a sample as bright as turf, at least
 // `min_saturation` of the field colour's distance from grey, whose chromaticity lies within `step`
 // of the last such sample's. Turf in a light the frame's colours miss (seen through a goal's
-// net, a lit patch) changes colour gradually; a wall, a floor or paint beside it does not, and
-// are no nearer grey than turf only when green themselves.
+// net, a lit patch) changes colour gradually; a wall, a floor or paint jumps from it, and only a
+// green one is as far from grey as turf.
 class ChainedTurf {
  public:
   ChainedTurf(const FieldPixel& pixel, float step, float min_saturation)
