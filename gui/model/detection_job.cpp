@@ -84,6 +84,17 @@ void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, 
   });
 }
 
+float DetectionJob::bar_progress() const {
+  if (!measuring()) return progress();
+  return total_ ? static_cast<float>(measured()) / static_cast<float>(total_) : 1.0f;
+}
+
+std::string DetectionJob::bar_text() const {
+  const bool choosing = measuring();
+  return std::string(choosing ? "measuring " : "detecting ") + std::to_string(choosing ? measured() : done_) + "/" +
+         std::to_string(total_);
+}
+
 std::vector<DetectionResult> DetectionJob::poll() {
   std::vector<DetectionResult> results = job_.poll();
   done_ += results.size();

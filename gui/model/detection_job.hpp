@@ -63,6 +63,10 @@ class DetectionJob {
   std::size_t measured() const { return measured_ ? measured_->load() : total_; }
   bool measuring() const { return running() && measured() < total_; }
   float progress() const { return total_ ? static_cast<float>(done_) / static_cast<float>(total_) : 1.0f; }
+  // What a progress bar shows: the share measured while the job chooses the detector, then the
+  // share detected, and "measuring k/N" or "detecting k/N".
+  float bar_progress() const;
+  std::string bar_text() const;
 
  private:
   std::size_t total_ = 0, done_ = 0;

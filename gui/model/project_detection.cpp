@@ -29,7 +29,7 @@ bool chooses_detector(const Project& project) {
 }
 
 void ProjectDetection::start(const Project& project, const std::filesystem::path& project_file, bool only_undetected,
-                             const std::optional<GroundCamera>& camera) {
+                             const std::optional<GroundCamera>& camera, std::optional<bool> choose) {
   report_ = {};
   std::vector<DetectionJob::Item> items;
   for (std::size_t i = 0; i < project.images.size(); ++i) {
@@ -37,7 +37,7 @@ void ProjectDetection::start(const Project& project, const std::filesystem::path
       items.push_back({i, Project::resolve(project_file, project.images[i].path)});
     }
   }
-  job_.start(std::move(items), project.detector, project.thresholds, camera, chooses_detector(project));
+  job_.start(std::move(items), project.detector, project.thresholds, camera, choose.value_or(chooses_detector(project)));
 }
 
 const std::vector<std::size_t>& ProjectDetection::poll(Project& project) {

@@ -42,8 +42,10 @@ class ProjectDetection {
   // parameters and thresholds; a running detection is replaced. A folder's new project
   // (chooses_detector) first has its detector chosen from its frames, which poll() adopts.
   // `camera`: the robot's, when known (the centre circle is also fitted on the turf).
+  // `choose`: whether the detector is chosen from the frames first; by default when
+  // chooses_detector(project).
   void start(const Project& project, const std::filesystem::path& project_file, bool only_undetected,
-             const std::optional<GroundCamera>& camera = std::nullopt);
+             const std::optional<GroundCamera>& camera = std::nullopt, std::optional<bool> choose = std::nullopt);
   // Once per frame: takes the finished images into `project` (segments replaced, human labels
   // moved to the matching new segments, detection time) and returns their indices.
   const std::vector<std::size_t>& poll(Project& project);

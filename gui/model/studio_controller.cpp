@@ -347,6 +347,10 @@ void StudioController::detect_all(bool only_undetected) {
   detection_.start(project_, project_file_, only_undetected, options_.camera);
 }
 
+void StudioController::choose_detector_from_frames() {
+  detection_.start(project_, project_file_, false, options_.camera, true);
+}
+
 std::vector<Segment> StudioController::all_segments() const {
   std::vector<Segment> all;
   for (const ImageEntry& e : project_.images) all.insert(all.end(), e.segments.begin(), e.segments.end());

@@ -140,6 +140,9 @@ class StudioController {
   const DetectorParams& detector_params() const { return project_.detector; }
   void set_detector_params(const DetectorParams& params);
   void detect_all(bool only_undetected = true);
+  // Every image measured, the detector chosen from them as `fieldlines calibrate` chooses it
+  // (from the current one), then every image detected again with it; labels follow by geometry.
+  void choose_detector_from_frames();
   DetectionJob& detection() { return detection_.job(); }
   const DetectionJob& detection() const { return detection_.job(); }
   const DetectionReport& detection_report() const { return detection_.report(); }

@@ -82,14 +82,8 @@ void draw_status_bar(const studio::StudioController& controller, const UiState& 
   if (const studio::DetectionJob& job = controller.detection(); job.running()) {
     // Visible from every tab: detection of a whole folder takes a while on a laptop.
     // A folder's first detection measures every frame first, to choose the detector.
-    char overlay[48];
-    const bool measuring = job.measuring();
-    std::snprintf(overlay, sizeof overlay, "%s %zu/%zu", measuring ? "measuring" : "detecting",
-                  measuring ? job.measured() : job.done(), job.total());
-    const float share = measuring && job.total() ? static_cast<float>(job.measured()) / static_cast<float>(job.total())
-                                                 : job.progress();
     ImGui::SameLine();
-    ImGui::ProgressBar(share, {std::min(200.f, std::max(room(), 1.f)), 0}, overlay);
+    ImGui::ProgressBar(job.bar_progress(), {std::min(200.f, std::max(room(), 1.f)), 0}, job.bar_text().c_str());
   }
   if (notes.empty()) return;
   ImGui::SameLine(0, gap * 3);

@@ -115,7 +115,7 @@ void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/
   if (released) controller.flush();
   studio::DetectionJob& job = controller.detection();
   if (job.running()) {
-    ImGui::ProgressBar(job.progress(), {-1, 0});
+    ImGui::ProgressBar(job.bar_progress(), {-1, 0}, job.bar_text().c_str());
     if (ImGui::Button("Stop detection")) job.cancel();
   } else {
     if (ImGui::Button("Detect new images")) controller.detect_all(true);
@@ -125,6 +125,13 @@ void draw_thresholds_panel(studio::StudioController& controller, UiState& /*ui*/
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("Detect every image again with these parameters; labels move to the new segments\n"
                         "that overlap the old ones (same direction, within a few pixels)");
+    }
+    // Its own line: three buttons overrun the side panel.
+    if (ImGui::Button("Choose the detector from the frames")) controller.choose_detector_from_frames();
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("Measure every image and choose the detector as `fieldlines calibrate` does (a\n"
+                        "folder's first detection does this), then detect every image again; labels\n"
+                        "move to the new segments as with Re-detect all");
     }
   }
 }

@@ -442,6 +442,19 @@ TEST(DetectionJob, AFolderProjectsFirstDetectionChoosesTheDetectorFromItsFrames)
   c.detection().wait();
   c.poll();
   EXPECT_TRUE(c.project().detector == own);
+  EXPECT_EQ(c.detection().bar_text(), "detecting 3/3");
+  // The Thresholds tab's "Choose from the frames": chosen again from the current detector, every
+  // image detected again, the labels following by geometry.
+  const std::size_t first[] = {0};
+  ASSERT_TRUE(c.label(first, Label::Marking));
+  c.choose_detector_from_frames();
+  c.detection().wait();
+  c.poll();
+  fieldlines::FieldContrast again(rule, own);
+  for (const cv::Mat& image : images) again.add_image(image);
+  EXPECT_TRUE(c.project().detector == fieldlines::calibrated_detector(own, again, rule));
+  EXPECT_EQ(c.detection_report().labels_kept, 1u);
+  EXPECT_EQ(c.detection().measured(), 3u);
   // A folder project whose detector was set before its first detection keeps it too.
   fieldlines::Project fresh = fs::project_for_folder(frames, opened.file);
   fresh.detector.gaussian_kernel = 3;
