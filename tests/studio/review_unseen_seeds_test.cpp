@@ -112,7 +112,7 @@ INSTANTIATE_TEST_SUITE_P(Seeds, ReviewUnseenSeeds,
                          // Measured (agree, marking precision), with the detector chosen from the
                          // frames: ssl 4242 94.5 %, 1.000; ssl 777 89.5 %, 1.000 (the chosen
                          // detector's denser anchors add the 1 cm lines' short pieces, which the
-                         // stripes check refuses: markings labelled right 40 -> 71, agreement 94.0 ->
+                         // stripes check refuses: markings labelled right 38 -> 71, agreement 93.9 ->
                          // 89.5 %); kid 4242 94.2 %, 1.000; kid 777 96.2 %, 0.992.
                          ::testing::Values(UnseenSet{"ssl", 4242, 0.92, 0.95}, UnseenSet{"ssl", 777, 0.87, 0.95},
                                            UnseenSet{"kid", 4242, 0.93, 0.95}, UnseenSet{"kid", 777, 0.93, 0.95}),
