@@ -7,7 +7,7 @@
 namespace fieldlines::avx2 {
 
 // One output row from the three input rows of its cells (8-bit BGR): the number of leading
-// output pixels it wrote (a multiple of 16, at most w); the caller finishes the row.
+// output pixels it wrote (whole blocks of 64, at most w); the caller finishes the row.
 int cells3_row(const std::uint8_t* r0, const std::uint8_t* r1, const std::uint8_t* r2, int w, std::uint8_t* out);
 
 }  // namespace fieldlines::avx2

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "features/paint_profile.hpp"
+
 namespace fieldlines {
 namespace {
 
@@ -57,10 +59,9 @@ void TurfColours::measure(const cv::Mat& bgr8, const Rgb& field, const TurfColou
   // Grow from the peak over the 8 neighbours of each bin taken (breadth first, a fixed queue),
   // through bins as saturated as turf.
   const auto floor = static_cast<std::uint32_t>(params.grow_share * float(peak));
-  const float grey_distance = params.min_saturation * (std::abs(field[0] / field_sum - 1.f / 3) + std::abs(field[1] / field_sum - 1.f / 3));
+  const float grey_distance = params.min_saturation * paint::greyness_distance(field[0] / field_sum, field[1] / field_sum);
   const auto saturated = [&](int i, int j) {
-    const float r = (float(i) + 0.5f) / kBins, g = (float(j) + 0.5f) / kBins;
-    return std::abs(r - 1.f / 3) + std::abs(g - 1.f / 3) >= grey_distance;
+    return paint::greyness_distance((float(i) + 0.5f) / kBins, (float(j) + 0.5f) / kBins) >= grey_distance;
   };
   turf_.fill(0);
   std::size_t head = 0, tail = 0;

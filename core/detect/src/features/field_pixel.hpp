@@ -12,6 +12,7 @@
 #include "fieldlines/detect/field_boundary.hpp"
 #include "fieldlines/detect/segment.hpp"
 #include "fieldlines/detect/turf_colours.hpp"
+#include "features/paint_profile.hpp"
 
 namespace fieldlines {
 
@@ -42,13 +43,14 @@ class FieldPixel {
   bool field(const std::uint8_t* bgr) const {
     // The same value as the float sum of the three (exact either way): one conversion, not three.
     const float sum = float(bgr[0] + bgr[1] + bgr[2]);
-    if (!p_.brightness.contains(sum, sum_)) return false;
-    const float r = bgr[2] / sum, g = bgr[1] / sum;
+    return bright_as_turf(sum) && field_chroma(bgr[2] / sum, bgr[1] / sum);
+  }
+  // field()'s two tests: a pixel's R + G + B, then its chromaticities r = R / sum, g = G / sum.
+  bool bright_as_turf(float sum) const { return p_.brightness.contains(sum, sum_); }
+  bool field_chroma(float r, float g) const {
     return std::abs(r - r_) + std::abs(g - g_) <= tolerance_ || (turf_ && turf_->contains(r, g));
   }
-  bool bright_as_turf(float sum) const { return p_.brightness.contains(sum, sum_); }
-  float field_r() const { return r_; }  // the median's chromaticities
-  float field_g() const { return g_; }
+  float field_greyness_distance() const { return paint::greyness_distance(r_, g_); }  // the median's
   bool dark(const std::uint8_t* bgr) const {
     return float(bgr[0] + bgr[1] + bgr[2]) < p_.dark_brightness * sum_;
   }
@@ -72,14 +74,13 @@ class FieldPixel {
 class ChainedTurf {
  public:
   ChainedTurf(const FieldPixel& pixel, float step, float min_saturation)
-      : pixel_(pixel), step_(step),
-        floor_(min_saturation * (std::abs(pixel.field_r() - 1.f / 3) + std::abs(pixel.field_g() - 1.f / 3))) {}
+      : pixel_(pixel), step_(step), floor_(min_saturation * pixel.field_greyness_distance()) {}
   bool field(const std::uint8_t* bgr) {
-    const float sum = std::max(float(bgr[0] + bgr[1] + bgr[2]), 1.f);
+    const float sum = float(bgr[0] + bgr[1] + bgr[2]);
+    if (!pixel_.bright_as_turf(sum)) return false;  // neither field nor turf in another light
     const float r = bgr[2] / sum, g = bgr[1] / sum;
-    const bool turf = pixel_.field(bgr) ||
-                      (chained_ && pixel_.bright_as_turf(sum) && std::abs(r - 1.f / 3) + std::abs(g - 1.f / 3) >= floor_ &&
-                       std::abs(r - r_) + std::abs(g - g_) <= step_);
+    const bool turf = pixel_.field_chroma(r, g) || (chained_ && paint::greyness_distance(r, g) >= floor_ &&
+                                                     std::abs(r - r_) + std::abs(g - g_) <= step_);
     if (turf) chained_ = true, r_ = r, g_ = g;
     return turf;
   }

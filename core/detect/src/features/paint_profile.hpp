@@ -20,10 +20,12 @@ constexpr float kTopWidthShare = 0.25f;  // the widest stripe on the top row, as
 
 inline float brightness(const std::uint8_t* p) { return float(p[0] + p[1] + p[2]); }  // exact: one conversion
 
-// Distance of a pixel's chromaticity from grey: |r - 1/3| + |g - 1/3|, r = R / (R + G + B).
+// Distance of chromaticities r = R / (R + G + B), g = G / (R + G + B) from grey.
+inline float greyness_distance(float r, float g) { return std::abs(r - 1.f / 3) + std::abs(g - 1.f / 3); }
+// ...of a pixel's.
 inline float greyness_distance(const std::uint8_t* p) {
   const float sum = std::max(brightness(p), 1.f);
-  return std::abs(p[2] / sum - 1.f / 3) + std::abs(p[1] / sum - 1.f / 3);
+  return greyness_distance(p[2] / sum, p[1] / sum);
 }
 
 // Whether `peak`, brighter than `turf` and still in the field colour, is grey paint blended into
