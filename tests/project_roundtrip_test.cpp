@@ -6,6 +6,7 @@
 
 #include "cli_test_support.hpp"
 #include "fieldlines/data/project.hpp"
+#include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/detect/error.hpp"
 
 namespace fieldlines::test {
@@ -34,6 +35,29 @@ TEST_F(ProjectRoundTrip, SaveThenLoadKeepsEverything) {
   EXPECT_EQ(q.images[0].segments[1].label, Label::Unlabelled);
   EXPECT_EQ(q.labelled_count(), 1u);
   q.save(file);  // a loaded project can be saved over itself
+}
+
+// How the detector was chosen from the frames rides along with the project; a file whose record
+// is no object is refused by name, never half read.
+TEST_F(ProjectRoundTrip, TheDetectorsChoiceIsKeptAndAMalformedOneRefused) {
+  Project p;
+  const auto file = dir_ / "project.json";
+  p.save(file);
+  EXPECT_TRUE(Project::load(file).detector_choice.is_null());
+  EXPECT_FALSE(nlohmann::json::parse(read_file(file)).contains("detector_choice")) << "none: no key";
+  p.detector_choice = {{"calibrated", true}, {"field_texture", 12.5}, {"frames_with_field", 4}};
+  p.save(file);
+  EXPECT_EQ(Project::load(file).detector_choice, p.detector_choice);
+  nlohmann::json j = nlohmann::json::parse(read_file(file));
+  j["detector_choice"] = "calibrated";
+  write_file_atomically(file, j.dump());
+  try {
+    Project::load(file);
+    ADD_FAILURE() << "a record that is no object loaded";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("'detector_choice' must be an object"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("project.json"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(ProjectRoundTrip, ProposalsRoundTripAndAreNeverLabels) {

@@ -27,10 +27,12 @@ std::vector<StripeVerdict> verdicts(StripeCheck& check, const cv::Mat& image, co
   return out;
 }
 
-// The detector for the venue the frames show, as `fieldlines calibrate` chooses it; an image that
-// cannot be read is skipped here (its detection says why). Counts the images in `measured`.
-DetectorParams chosen_detector(const std::vector<DetectionJob::Item>& items, const DetectorParams& given,
-                               const std::stop_token& stop, std::atomic<std::size_t>& measured) {
+// The detector for the venue the frames show, as `fieldlines calibrate` chooses it and records
+// it; an image that cannot be read is skipped here (its detection says why). Counts the images
+// in `measured`.
+std::shared_ptr<const DetectorChoice> chosen_detector(const std::vector<DetectionJob::Item>& items,
+                                                      const DetectorParams& given, const std::stop_token& stop,
+                                                      std::atomic<std::size_t>& measured) {
   const DetectorCalibrationParams rule;
   FieldContrast contrast(rule, given);
   for (const DetectionJob::Item& item : items) {
@@ -42,7 +44,9 @@ DetectorParams chosen_detector(const std::vector<DetectionJob::Item>& items, con
     }
     ++measured;
   }
-  return calibrated_detector(given, contrast, rule);
+  const DetectorParams chosen = calibrated_detector(given, contrast, rule);
+  return std::make_shared<const DetectorChoice>(
+      DetectorChoice{chosen, detector_provenance(contrast, chosen, contrast.frames() > 0)});
 }
 
 }  // namespace
@@ -54,9 +58,9 @@ void DetectionJob::start(std::vector<Item> items, const DetectorParams& params, 
   measured_ = choose_detector ? std::make_shared<std::atomic<std::size_t>>(0) : nullptr;
   job_.start([items = std::move(items), params, thresholds, camera, measured = measured_](std::stop_token stop,
                                                                                           const auto& report) {
-    std::optional<DetectorParams> chosen;
+    std::shared_ptr<const DetectorChoice> chosen;
     if (measured) chosen = chosen_detector(items, params, stop, *measured);
-    const DetectorParams every = with_every_feature(chosen.value_or(params));
+    const DetectorParams every = with_every_feature(chosen ? chosen->params : params);
     LineDetector detector(every, thresholds);  // throws on bad parameters (or camera): the job's error
     detector.set_find_field_boundary(true);
     detector.set_camera(camera);

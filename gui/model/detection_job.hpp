@@ -17,11 +17,20 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "fieldlines/detect/detector.hpp"
 #include "gui/model/job.hpp"
 #include "gui/model/proposal_gate.hpp"
 
 namespace fieldlines::studio {
+
+// The detector a job chose from its frames, and the record of that choice (what
+// detector_provenance() writes: the contrasts measured, the parameters chosen).
+struct DetectorChoice {
+  DetectorParams params;
+  nlohmann::json provenance;
+};
 
 struct DetectionResult {
   std::size_t image = 0;          // the caller's index
@@ -32,8 +41,9 @@ struct DetectionResult {
   std::vector<StripeVerdict> stripes;
   double detect_ms = 0;           // detector time only (not file loading), feature stages included
   std::string error;              // non-empty when this image could not be loaded or detected
-  // The detector parameters it was detected with, when the job chose them from the frames.
-  std::optional<DetectorParams> chosen_detector;
+  // The detector it was detected with, when the job chose it from the frames (one per job,
+  // shared by its results).
+  std::shared_ptr<const DetectorChoice> chosen_detector;
 };
 
 class DetectionJob {

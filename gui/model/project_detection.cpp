@@ -51,9 +51,10 @@ const std::vector<std::size_t>& ProjectDetection::poll(Project& project) {
       report_.failed.emplace_back(r.image, r.error);
       continue;
     }
-    if (r.chosen_detector && !(*r.chosen_detector == project.detector)) {
-      project.detector = *r.chosen_detector;  // what the exported file will run
-      report_.detector_chosen = true;
+    if (r.chosen_detector) {
+      if (!(r.chosen_detector->params == project.detector)) report_.detector_chosen = true;
+      project.detector = r.chosen_detector->params;  // what the exported file will run
+      project.detector_choice = r.chosen_detector->provenance;  // and why (its provenance)
     }
     // Human labels move to the new segments that match the old ones (the rest are Unlabelled).
     for (Segment& s : r.segments) s.label = Label::Unlabelled;

@@ -301,6 +301,7 @@ void StudioController::flush() {
 void StudioController::set_detector_params(const DetectorParams& params) {
   if (params == project_.detector) return;
   project_.detector = params;
+  project_.detector_choice = nullptr;  // set by hand: no longer what the frames chose
   settings_dirty_ = true;
   settings_changed_at_ = -1;
 }

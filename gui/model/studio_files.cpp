@@ -40,6 +40,8 @@ void export_thresholds(const StudioController& controller, const std::filesystem
                      {"counts", {{"train_segments", train_segments}, {"test_segments", test_segments}}},
                      {"train", part(controller.train_counts(), train_segments)},
                      {"test", part(controller.test_counts(), test_segments)}};
+  // How the detector was chosen from the frames, under the key `fieldlines calibrate` uses.
+  if (project.detector_choice.is_object()) file.provenance["detector"] = project.detector_choice;
   // Why a class is off, for whoever reads the file later: calibration's reason or the user's choice.
   for (const Label cls : kSwitchableClasses) {
     if (controller.class_on(cls)) continue;

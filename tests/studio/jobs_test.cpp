@@ -20,6 +20,7 @@
 #include "fieldlines/detect/atomic_file.hpp"
 #include "fieldlines/data/project.hpp"
 #include "fieldlines/detect/error.hpp"
+#include "fieldlines/detect/thresholds_file.hpp"
 #include "fieldlines/train/detector_calibration.hpp"
 #include "fixtures.hpp"
 #include "tests/painted_field.hpp"
@@ -29,6 +30,7 @@
 #include "gui/model/project_detection.hpp"
 #include "gui/model/message_queue.hpp"
 #include "gui/model/studio_controller.hpp"
+#include "gui/model/studio_files.hpp"
 #include "gui/model/training_job.hpp"
 #include "gui/model/video_frames.hpp"
 
@@ -432,12 +434,24 @@ TEST(DetectionJob, AFolderProjectsFirstDetectionChoosesTheDetectorFromItsFrames)
   EXPECT_NE(c.detection_report().summary().find("with the detector chosen from them"), std::string::npos)
       << c.detection_report().summary();
   EXPECT_EQ(c.detection().measured(), 3u);
+  // The choice is recorded as `fieldlines calibrate` records it, saved with the project and
+  // written into the exported file's provenance: whoever reads the robot's file later sees why
+  // its detector is what it is.
+  const nlohmann::json record = fieldlines::detector_provenance(contrast, chosen, true);
+  EXPECT_EQ(c.project().detector_choice, record) << c.project().detector_choice.dump();
+  EXPECT_EQ(fieldlines::Project::load(opened.file).detector_choice, record);
+  const std::filesystem::path exported = dir.path() / "robot.json";
+  fs::export_thresholds(c, exported);
+  EXPECT_EQ(fieldlines::load_thresholds_file(exported).provenance["detector"], record);
 
   // Detected once: detected again with the same detector, whatever it is.
   EXPECT_FALSE(fs::chooses_detector(c.project()));
   fieldlines::DetectorParams own = c.project().detector;
   own.min_line_length = 30;
   c.set_detector_params(own);
+  EXPECT_TRUE(c.project().detector_choice.is_null()) << "set by hand: no longer what the frames chose";
+  fs::export_thresholds(c, exported);
+  EXPECT_FALSE(fieldlines::load_thresholds_file(exported).provenance.contains("detector"));
   c.detect_all(false);
   c.detection().wait();
   c.poll();
@@ -453,6 +467,7 @@ TEST(DetectionJob, AFolderProjectsFirstDetectionChoosesTheDetectorFromItsFrames)
   fieldlines::FieldContrast again(rule, own);
   for (const cv::Mat& image : images) again.add_image(image);
   EXPECT_TRUE(c.project().detector == fieldlines::calibrated_detector(own, again, rule));
+  EXPECT_EQ(c.project().detector_choice["frames_with_field"], 3) << "recorded again";
   EXPECT_EQ(c.detection_report().labels_kept, 1u);
   EXPECT_EQ(c.detection().measured(), 3u);
   // A folder project whose detector was set before its first detection keeps it too.

@@ -52,6 +52,10 @@ Project parse_project(const std::string& text, const std::string& where) {
   p.detector = detector_params_from_json(j["detector"], where + ": detector");
   p.thresholds = thresholds_from_json(j, where);
   if (j.contains("split")) p.split = split_spec_from_json(j["split"], where + ": split");
+  if (j.contains("detector_choice")) {
+    if (!j["detector_choice"].is_object()) throw Error(where + ": 'detector_choice' must be an object");
+    p.detector_choice = j["detector_choice"];
+  }
   if (!j.contains("segment_columns") || j["segment_columns"] != json(kColumns))
     throw Error(where + ": 'segment_columns' must be " + json(kColumns).dump());
   if (!j.contains("images") || !j["images"].is_array()) throw Error(where + ": missing array 'images'");
@@ -153,6 +157,7 @@ void Project::save(const std::filesystem::path& file) const {
   j["detector"] = detector_params_to_json(detector);
   j.update(thresholds_to_json(thresholds));
   j["split"] = split_spec_to_json(split);
+  if (detector_choice.is_object()) j["detector_choice"] = detector_choice;
   j["segment_columns"] = kColumns;
   json images_json = json::array();
   for (const ImageEntry& e : images) {

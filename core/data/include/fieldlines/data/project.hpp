@@ -7,6 +7,8 @@
 //     "detector": { DetectorParams }, "gradient_mode": ..., "classes": { ... },   (as thresholds file)
 //     "split": { "mode": "image" | "row", "train_fraction": 0.7, "seed": 1 },  (optional: the test
 //              split of fieldlines/data/split_spec.hpp; absent fields take these, the CLI's, defaults)
+//     "detector_choice": { ... },  (optional: how "detector" was chosen from the frames, the
+//              record `fieldlines calibrate` writes in its provenance; absent when it was not)
 //     "segment_columns": ["x0","y0","x1","y1","saliency","gx_r","gx_g","gx_b","gy_r","gy_g","gy_b","label"],
 //     "images": [ { "path": "frames/0001.png", "detect_ms": 3.1,
 //                   "segments": [[x0, y0, x1, y1, saliency, gx.., gy.., "marking"], ...],
@@ -17,6 +19,8 @@
 #include <span>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "fieldlines/detect/classifier.hpp"
 #include "fieldlines/detect/detector.hpp"
@@ -80,6 +84,11 @@ class Project {
   DetectorParams detector;
   Thresholds thresholds;
   SplitSpec split;  // how the labelled segments divide into train and test
+  // How `detector` was chosen from the project's frames (detector_provenance(), the contrasts
+  // measured and what they chose): an object while `detector` is what was chosen, null once it
+  // is set otherwise (the studio clears it then), so an exported file never claims a choice its
+  // detector no longer is.
+  nlohmann::json detector_choice;
   std::vector<ImageEntry> images;
 };
 
