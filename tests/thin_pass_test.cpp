@@ -155,6 +155,34 @@ TEST(ThinPass, AReusedDetectorDrawsWhatAFreshOneDraws) {
   }
 }
 
+// The pass's anchors lie on a lattice of the grid's columns and rows (ridge_anchor_lattice):
+// a short far line below a wall (as far_line), level or upright, gets its centre segment
+// wherever it lies against the lattice, at every offset of the lattice's period along it and
+// on every grid row (column) across it. A grid thinned both ways would miss a level line lying
+// between its rows. (A level ridge one pixel thick between the grid's own rows has no anchor
+// with the whole grid either: the method's grid.)
+TEST(ThinPass, AShortLineIsFoundWhereverItLiesAgainstTheAnchorLattice) {
+  const DetectorParams params = venue_detector(2);
+  const int period = params.scan_interval * 8;  // the lattice at min_line_length 25: 17.7 px apart at most
+  for (const bool level : {true, false}) {
+    for (int offset = 0; offset < period; ++offset) {
+      // Drawn level, 40 px long and 2 px wide, the wall's foot 4 px above it; upright: transposed.
+      const int along = 200 + offset, across = 1 + params.scan_interval * (50 + offset);
+      cv::Mat clean(480, 640, CV_8UC3, test::kTurf);
+      cv::rectangle(clean, {0, 0}, {639, across - 5}, test::kDark, cv::FILLED);
+      cv::line(clean, {along, across}, {along + 40, across}, kFaintPaint, 2, cv::LINE_AA);
+      if (!level) clean = clean.t();
+      const std::vector<Segment> found = LineDetector(params).detect(test::noisy(clean));
+      const bool centre = std::any_of(found.begin(), found.end(), [&](const Segment& s) {
+        const float a0 = level ? s.y0 : s.x0, a1 = level ? s.y1 : s.x1;  // across the line
+        return std::abs(a0 - static_cast<float>(across)) <= 1 && std::abs(a1 - static_cast<float>(across)) <= 1 &&
+               std::hypot(s.x1 - s.x0, s.y1 - s.y0) >= 25;
+      });
+      EXPECT_TRUE(centre) << (level ? "level" : "upright") << " line at offset " << offset;
+    }
+  }
+}
+
 TEST(ThinPass, CalibrationTurnsItOn) {
   const DetectorCalibrationParams rule;
   FieldContrast contrast(rule, DetectorParams{});

@@ -106,7 +106,12 @@ void ElsedEngine::find_anchors(int scan_interval, int threshold, const cv::Mat& 
     }
   };
   row_anchors_.clear();
+  const int lattice = std::max(limits.lattice, 1);
   for (int y = top; y < h - 1; y += scan_interval) {
+    if (lattice > 1 && (y - 1) / scan_interval % lattice != 0) {
+      for (int k = 0; k < columns; k += lattice) consider(k, y);  // a lattice column's point
+      continue;
+    }
     int k = 0;
 #if CV_SIMD128
     // The method's grid (every second column, the one calibration keeps): eight grid columns
@@ -167,7 +172,9 @@ elsed::RidgeTarget ElsedEngine::ridge_target(int width, int rows, int reach, int
 void ElsedEngine::draw_ridges(const cv::Mat& bgr, const DetectorParams& params, int reach, std::vector<Segment>& out) {
   const cv::Mat band = bgr.rowRange(0, std::clamp(maps_.height, 0, bgr.rows));  // a view: no copy
   if (band.rows < 3 || maps_.width != bgr.cols) return;
-  find_anchors(params.scan_interval, params.anchor_threshold, band, {});
+  AnchorLimits lattice;
+  lattice.lattice = elsed::ridge_anchor_lattice(params.min_line_length, params.scan_interval);
+  find_anchors(params.scan_interval, params.anchor_threshold, band, lattice);
   draw_and_validate(band, params, params.min_line_length, {}, out, reach);
 }
 

@@ -63,6 +63,7 @@ class ElsedEngine {
     int min_bright_sum = 0;           // a pixel this bright (B + G + R) within 5 px across...
     float max_chroma = 2;             // ...and this grey (near_grey, field_pixel.hpp); 2: any
     const AnchorCells* cells = nullptr;  // anchors only in the cells it allows; null: anywhere
+    int lattice = 1;  // the grid kept on every lattice-th of its columns and rows only (ridge_pass.hpp); 1: all
   };
   // `keep` drops segments by their colours before their validation (colour_gradients.hpp).
   void redraw(const cv::Mat& bgr, const DetectorParams& params, int scan_interval, int min_line_length,

@@ -1,6 +1,7 @@
 #include "ridge_pass.hpp"
 
 #include <algorithm>
+#include <numbers>
 
 #include <opencv2/core/hal/intrin.hpp>
 
@@ -105,6 +106,11 @@ void ready_ridge_maps(int width, int rows, GradientMaps& maps, std::vector<Ridge
 void ridge_row(const std::uint8_t* const* rows, int width, const RidgeTarget& target, const RidgeRow& out) {
   if (width <= 2 * target.reach) return;  // columns within `reach` of the border get no ridge
   kRows[target.reach - 1](rows, target.reach, width - target.reach, target.threshold, target.use_avx2, out);
+}
+
+int ridge_anchor_lattice(int min_line_length, int scan_interval) {
+  const double apart = static_cast<double>(min_line_length) / std::numbers::sqrt2;  // the lattice lines' most
+  return std::max(1, static_cast<int>(apart / static_cast<double>(std::max(scan_interval, 1))));
 }
 
 std::size_t max_ridge_blocks(int width, int rows) {
