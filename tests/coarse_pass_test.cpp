@@ -158,7 +158,9 @@ TEST(CoarsePass, CalibrationChoosesItWhereNearLinesBreakUp) {
   FieldContrast textured(rule, DetectorParams{});
   for (int i = 0; i < 2; ++i) textured.add_image(textured_turf_with_a_near_line());
   EXPECT_GE(textured.coarse_gain(), rule.min_coarse_gain);
-  EXPECT_EQ(calibrated_detector(DetectorParams{}, textured, rule).coarse_scale, rule.coarse_scale);
+  const DetectorParams chosen = calibrated_detector(DetectorParams{}, textured, rule);
+  EXPECT_EQ(chosen.coarse_scale, rule.coarse_scale);
+  EXPECT_EQ(chosen.thin_reach, 0) << "the thin-line pass would draw the turf's blades";
   cv::Mat clean(480, 640, CV_8UC3, test::kTurf);
   cv::line(clean, {40, 400}, {600, 430}, test::kPaint, 12);
   cv::line(clean, {40, 120}, {600, 130}, test::kPaint, 3);
@@ -166,6 +168,7 @@ TEST(CoarsePass, CalibrationChoosesItWhereNearLinesBreakUp) {
   plain.add_image(test::noisy(clean));
   EXPECT_LT(plain.coarse_gain(), rule.min_coarse_gain);
   EXPECT_EQ(calibrated_detector(DetectorParams{}, plain, rule).coarse_scale, 1);
+  EXPECT_EQ(calibrated_detector(DetectorParams{}, plain, rule).thin_reach, rule.thin_reach);
   // Without the measurement (the one-argument constructor) it is never chosen.
   FieldContrast unmeasured(rule);
   unmeasured.add_image(textured_turf_with_a_near_line());

@@ -127,6 +127,7 @@ DetectorParams calibrated_detector(const DetectorParams& given, const FieldContr
     d.coarse_scale = params.coarse_scale;
     d.coarse_from = params.coarse_from;
     d.coarse_twins_from = params.coarse_twins_from;
+    d.thin_reach = 0;  // turf this coarse fills the ridge maps with its blades (see the header)
   }
   if (!params.follow_contrast) return d;
   const double wanted = std::max(params.paint_share * contrast.paint(), params.texture_margin * contrast.texture());

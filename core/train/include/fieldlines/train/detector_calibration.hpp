@@ -27,7 +27,10 @@
 // (docs/detector.md, "The coarse pass").
 //
 // The thin-line pass (DetectorParams::thin_reach: far lines up to 3 px wide drawn along their
-// centres) is always on, over the upper 0.6 of the frame. Held out on the venues: marking recall
+// centres) is on over the upper 0.6 of the frame unless the coarse pass is chosen: turf coarse
+// enough for that pass fills the ridge maps with its blades, and on the Humanoid frames (the
+// venue that chooses it) every figure held out is the same with the thin pass as without it,
+// which cost a fifth more time on top of the coarse pass. Held out on the venues: marking recall
 // +0.067 on Bangkok (0.696 -> 0.763) and +0.025 on SSL, the share of line edges on any segment
 // +0.067 and +0.025; the others within 0.002, precision at most 0.008 lower (Bordeaux). Lines up
 // to 5 px (reach 3) found more (Bangkok 0.779, SSL 0.801) but cost more: thin/fieldlines 1.29-1.42
@@ -69,7 +72,7 @@ struct DetectorCalibrationParams {
   // cost 1.08 -> 1.12 of a plain detect at 0.3.
   double coarse_twins_from = 0.3;
   double min_coarse_gain = 0.2;     // ...and kept when it adds this share to the stripes' length
-  int thin_reach = 2;               // the thin-line pass, always on (see the header)...
+  int thin_reach = 2;               // the thin-line pass, on unless the coarse pass is (see the header)...
   double thin_to = 0.6;             // ...over the rows above this share of the height
 };
 
