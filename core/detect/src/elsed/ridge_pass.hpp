@@ -60,12 +60,13 @@ void ready_ridge_maps(int width, int rows, GradientMaps& maps, std::vector<Ridge
 void ridge_row(const std::uint8_t* const* rows, int width, const RidgeTarget& target, const RidgeRow& out);
 // The ridge maps' anchors: the full scale's grid (every scan_interval px) kept on every n-th of
 // its columns and rows only, n returned here. On the ridge maps most grid points that are a
-// local maximum lie on the turf's short bright blades, each drawn to no segment (the drawing
-// from them was most of the pass's cost), while a line needs one anchor per piece. The lattice
-// lines lie at most min_line_length / sqrt 2 apart, so a straight piece of the minimum length,
-// whatever its direction and wherever it lies, spans that much across the columns or across the
-// rows and crosses a lattice line, whose grid points there are the full grid's: a level line is
-// met on every lattice column at any row (a grid thinned both ways could miss it between rows).
+// local maximum lie on the turf's short bright blades, each drawn to no segment (on textured
+// turf the drawing from them was about half the pass's cost), while a line needs one anchor per
+// piece. The lattice lines lie at most min_line_length / sqrt 2 apart, so a straight piece of
+// the minimum length, whatever its direction and wherever it lies, spans that much across the
+// columns or across the rows and crosses a lattice line, whose grid points there are the full
+// grid's: a level line is met on every lattice column at any grid row (a grid thinned both ways
+// could miss it between its rows).
 int ridge_anchor_lattice(int min_line_length, int scan_interval);
 // Blocks a band of `rows` rows `width` wide may list at most.
 std::size_t max_ridge_blocks(int width, int rows);
