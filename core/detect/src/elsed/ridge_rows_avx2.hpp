@@ -17,7 +17,7 @@ struct RidgeRow {
   std::uint32_t* blocks;     // room for every block of the row
   std::size_t* block_count;  // blocks written so far
 };
-inline constexpr int kRidgeBlock = 32;
+inline constexpr int kRidgeBlock = 16;
 // The diagonal steps that set dy's sign for lines up to 2 R - 1 px wide: R / sqrt(2), at least 1.
 template <int R>
 inline constexpr int kRidgeDiagonal = R * 7 / 10 > 1 ? R * 7 / 10 : 1;
@@ -28,10 +28,10 @@ namespace fieldlines::elsed::avx2 {
 
 // Columns [x0, x1) of a row, from 2 reach + 1 rows of the smoothed grey (`rows[reach]` the row
 // itself, rows[reach - d] and rows[reach + d] d rows above and below), for lines up to
-// 2 reach - 1 px wide (reach 1..8), kept at `threshold` (1..32767): each block of 32 columns
-// whose ridges' byte sum reaches `least` somewhere (ridge_pass.cpp) is written whole (zeros where
-// none is kept) and listed. Returns x1, or x0 when the row is shorter than 32 columns (the
-// caller does it).
+// 2 reach - 1 px wide (reach 1..8), kept at `threshold` (1..32767), 32 columns at a time: each
+// block of 16 columns whose ridges' byte sum reaches `least` somewhere (ridge_pass.cpp) is written
+// whole (zeros where none is kept) and listed. Returns x1, or x0 when the row is shorter than 32
+// columns (the caller does it).
 int ridge_row(const std::uint8_t* const* rows, int reach, int x0, int x1, int threshold, int least, const RidgeRow& out);
 
 }  // namespace fieldlines::elsed::avx2
