@@ -51,10 +51,11 @@ const std::vector<std::size_t>& ProjectDetection::poll(Project& project) {
       report_.failed.emplace_back(r.image, r.error);
       continue;
     }
-    if (r.chosen_detector) {
-      if (!(r.chosen_detector->params == project.detector)) report_.detector_chosen = true;
-      project.detector = r.chosen_detector->params;  // what the exported file will run
-      project.detector_choice = r.chosen_detector->provenance;  // and why (its provenance)
+    if (r.chosen_detector && r.chosen_detector != adopted_) {  // once per job: its results share it
+      adopted_ = r.chosen_detector;
+      if (!(adopted_->params == project.detector)) report_.detector_chosen = true;
+      project.detector = adopted_->params;             // what the exported file will run
+      project.detector_choice = adopted_->provenance;  // and why (its provenance)
     }
     // Human labels move to the new segments that match the old ones (the rest are Unlabelled).
     for (Segment& s : r.segments) s.label = Label::Unlabelled;

@@ -5,6 +5,7 @@
 // detected image's field features are kept here (the project file has no place for them).
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -70,6 +71,7 @@ class ProjectDetection {
   std::vector<FieldFeatures> features_;  // per image
   std::vector<ProposalGate> gates_;      // per image
   std::vector<std::size_t> changed_;  // poll's result, reused
+  std::shared_ptr<const DetectorChoice> adopted_;  // the last job's choice, once adopted
 };
 
 }  // namespace fieldlines::studio
