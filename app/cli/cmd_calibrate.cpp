@@ -191,7 +191,7 @@ VenueInputs gather_for_venue(const std::vector<std::string>& paths, const Detect
   if (rule.follow_contrast) {
     visit_inputs(paths, every, quiet, {.frame = [&](const cv::Mat& image) { contrast.add_image(image); }, .failed = {}});
     const DetectorParams chosen = calibrated_detector(given, contrast, rule);
-    return {gather(paths, chosen, start, every, quiet), chosen, detector_provenance(contrast, chosen, contrast.frames() > 0)};
+    return {gather(paths, chosen, start, every, quiet), chosen, detector_provenance(contrast, chosen)};
   }
   const DetectorParams assumed = field_detector(given, rule);
   Inputs in = gather(paths, assumed, start, every, quiet, &contrast);
@@ -201,7 +201,7 @@ VenueInputs gather_for_venue(const std::vector<std::string>& paths, const Detect
     again.failed = in.failed;
     in = std::move(again);
   }
-  return {std::move(in), chosen, detector_provenance(contrast, chosen, contrast.frames() > 0)};
+  return {std::move(in), chosen, detector_provenance(contrast, chosen)};
 }
 
 void show_class(const char* name, const ClassCalibration& c, const ClassThresholds& t) {

@@ -46,7 +46,7 @@ std::shared_ptr<const DetectorChoice> chosen_detector(const std::vector<Detectio
   }
   const DetectorParams chosen = calibrated_detector(given, contrast, rule);
   return std::make_shared<const DetectorChoice>(
-      DetectorChoice{chosen, detector_provenance(contrast, chosen, contrast.frames() > 0)});
+      DetectorChoice{chosen, detector_provenance(contrast, chosen)});
 }
 
 }  // namespace

@@ -259,7 +259,7 @@ py::dict calibrate_images(const py::object& images, const py::object& thresholds
       FieldContrast contrast({}, start.detector);
       for (const cv::Mat& view : views) contrast.add_image(view);
       chosen = calibrated_detector(start.detector, contrast);
-      detector_report = detector_provenance(contrast, chosen, contrast.frames() > 0);
+      detector_report = detector_provenance(contrast, chosen);
     }
     LineDetector detector(for_fitting(chosen), start.thresholds);
     inputs.check_stripes(chosen);

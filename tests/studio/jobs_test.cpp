@@ -437,7 +437,7 @@ TEST(DetectionJob, AFolderProjectsFirstDetectionChoosesTheDetectorFromItsFrames)
   // The choice is recorded as `fieldlines calibrate` records it, saved with the project and
   // written into the exported file's provenance: whoever reads the robot's file later sees why
   // its detector is what it is.
-  const nlohmann::json record = fieldlines::detector_provenance(contrast, chosen, true);
+  const nlohmann::json record = fieldlines::detector_provenance(contrast, chosen);
   EXPECT_EQ(c.project().detector_choice, record) << c.project().detector_choice.dump();
   EXPECT_EQ(fieldlines::Project::load(opened.file).detector_choice, record);
   const std::filesystem::path exported = dir.path() / "robot.json";

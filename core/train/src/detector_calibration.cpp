@@ -141,8 +141,8 @@ DetectorParams for_fitting(DetectorParams chosen) {
   return chosen;
 }
 
-nlohmann::json detector_provenance(const FieldContrast& contrast, const DetectorParams& chosen, bool calibrated) {
-  return {{"calibrated", calibrated},
+nlohmann::json detector_provenance(const FieldContrast& contrast, const DetectorParams& chosen) {
+  return {{"calibrated", contrast.frames() > 0},
           {"frames_with_field", contrast.frames()},
           {"field_texture", contrast.texture()},
           {"field_paint_contrast", contrast.paint()},

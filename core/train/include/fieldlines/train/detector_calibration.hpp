@@ -122,7 +122,8 @@ DetectorParams calibrated_detector(const DetectorParams& given, const FieldContr
 // relabel (stripes, and what builds on them), which the fit, reading no label, does not need.
 DetectorParams for_fitting(DetectorParams chosen);
 
-// What the thresholds file's provenance records of it: the measured contrasts and the choice.
-nlohmann::json detector_provenance(const FieldContrast& contrast, const DetectorParams& chosen, bool calibrated);
+// What the thresholds file's provenance records of it: the measured contrasts and the choice,
+// "calibrated" when some frame showed a field (calibrated_detector chose from them).
+nlohmann::json detector_provenance(const FieldContrast& contrast, const DetectorParams& chosen);
 
 }  // namespace fieldlines
