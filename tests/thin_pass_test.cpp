@@ -163,7 +163,8 @@ TEST(ThinPass, AReusedDetectorDrawsWhatAFreshOneDraws) {
 // with the whole grid either: the method's grid.)
 TEST(ThinPass, AShortLineIsFoundWhereverItLiesAgainstTheAnchorLattice) {
   const DetectorParams params = venue_detector(2);
-  const int period = params.scan_interval * 8;  // the lattice at min_line_length 25: 17.7 px apart at most
+  // The lattice at the pass's minimum length (18: 0.7 of 25): 12.7 px apart at most.
+  const int period = params.scan_interval * 6;
   for (const bool level : {true, false}) {
     for (int offset = 0; offset < period; ++offset) {
       // Drawn level, 40 px long and 2 px wide, the wall's foot 4 px above it; upright: transposed.
@@ -181,6 +182,27 @@ TEST(ThinPass, AShortLineIsFoundWhereverItLiesAgainstTheAnchorLattice) {
       EXPECT_TRUE(centre) << (level ? "level" : "upright") << " line at offset " << offset;
     }
   }
+}
+
+// A far line seen between two robots standing on it: a piece shorter than the detector's minimum
+// length (25 px) but not than the pass's (0.7 of it) gets its centre segment, below a wall as
+// in the lattice's test; the detector's own pass draws nothing there.
+TEST(ThinPass, AFarLinesPieceShorterThanTheMinimumLengthIsFound) {
+  const int across = 101, from = 201, to = 220;
+  cv::Mat clean(480, 640, CV_8UC3, test::kTurf);
+  cv::rectangle(clean, {0, 0}, {639, across - 5}, test::kDark, cv::FILLED);
+  cv::line(clean, {from, across}, {to, across}, kFaintPaint, 2, cv::LINE_AA);
+  cv::rectangle(clean, {from - 60, across - 6}, {from - 3, across + 60}, test::kDark, cv::FILLED);
+  cv::rectangle(clean, {to + 3, across - 6}, {to + 60, across + 60}, test::kDark, cv::FILLED);
+  const cv::Mat frame = test::noisy(clean);
+  const auto pieces = [&](const std::vector<Segment>& found) {
+    return std::count_if(found.begin(), found.end(), [&](const Segment& s) {
+      return std::abs(s.y0 - float(across)) <= 1 && std::abs(s.y1 - float(across)) <= 1 &&
+             std::hypot(s.x1 - s.x0, s.y1 - s.y0) >= 15;
+    });
+  };
+  EXPECT_EQ(pieces(LineDetector(venue_detector(0)).detect(frame)), 0);
+  EXPECT_EQ(pieces(LineDetector(venue_detector(2)).detect(frame)), 1);
 }
 
 TEST(ThinPass, CalibrationTurnsItOn) {

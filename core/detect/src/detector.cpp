@@ -339,7 +339,9 @@ void LineDetector::add_thin(const cv::Mat& bgr, std::vector<Segment>& out) {
   thin.clear();
   impl_->thin_engine.draw_ridges(bgr, params_, params_.thin_reach, thin);
   const std::size_t fine = out.size();
-  const float reach = static_cast<float>(params_.thin_reach) + 0.5f;
+  // A line as wide as the ridges' reach has its edges that far off its centre; the smoothing
+  // and the edge pixels' rounding move them up to a pixel farther (a 3 px line's, sloped: 2.7 px).
+  const float reach = static_cast<float>(params_.thin_reach) + 1.f;
   for (const Segment& s : thin)
     if (!edges_held(s, {out.data(), fine}, reach)) out.push_back(s);
 }

@@ -173,9 +173,10 @@ void ElsedEngine::draw_ridges(const cv::Mat& bgr, const DetectorParams& params, 
   const cv::Mat band = bgr.rowRange(0, std::clamp(maps_.height, 0, bgr.rows));  // a view: no copy
   if (band.rows < 3 || maps_.width != bgr.cols) return;
   AnchorLimits lattice;
-  lattice.lattice = elsed::ridge_anchor_lattice(params.min_line_length, params.scan_interval);
+  const int min_length = elsed::thin_min_length(params.min_line_length);
+  lattice.lattice = elsed::ridge_anchor_lattice(min_length, params.scan_interval);
   find_anchors(params.scan_interval, params.anchor_threshold, band, lattice);
-  draw_and_validate(band, params, params.min_line_length, {}, out, reach);
+  draw_and_validate(band, params, min_length, {}, out, reach);
 }
 
 void ElsedEngine::draw_and_validate(const cv::Mat& bgr, const DetectorParams& params, int min_line_length,

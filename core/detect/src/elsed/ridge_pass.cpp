@@ -1,6 +1,7 @@
 #include "ridge_pass.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include <opencv2/core/hal/intrin.hpp>
@@ -111,6 +112,10 @@ void ridge_row(const std::uint8_t* const* rows, int width, const RidgeTarget& ta
 int ridge_anchor_lattice(int min_line_length, int scan_interval) {
   const double apart = static_cast<double>(min_line_length) / std::numbers::sqrt2;  // the lattice lines' most
   return std::max(1, static_cast<int>(apart / static_cast<double>(std::max(scan_interval, 1))));
+}
+
+int thin_min_length(int min_line_length) {
+  return std::max(3, static_cast<int>(std::lround(kThinLengthShare * min_line_length)));
 }
 
 std::size_t max_ridge_blocks(int width, int rows) {
