@@ -111,7 +111,7 @@ void ridge_row(const std::uint8_t* const* rows, int width, const RidgeTarget& ta
 
 int ridge_anchor_lattice(int min_line_length, int scan_interval) {
   const double apart = static_cast<double>(min_line_length) / std::numbers::sqrt2;  // the lattice lines' most
-  return std::max(1, static_cast<int>(apart / static_cast<double>(std::max(scan_interval, 1))));
+  return std::max(1, static_cast<int>(std::lround(apart / static_cast<double>(std::max(scan_interval, 1)))));
 }
 
 int thin_min_length(int min_line_length) {

@@ -62,18 +62,20 @@ void ridge_row(const std::uint8_t* const* rows, int width, const RidgeTarget& ta
 // its columns and rows only, n returned here. On the ridge maps most grid points that are a
 // local maximum lie on the turf's short bright blades, each drawn to no segment (on textured
 // turf the drawing from them was about half the pass's cost), while a line needs one anchor per
-// piece. The lattice lines lie at most min_line_length / sqrt 2 apart, so a straight piece of
-// the minimum length, whatever its direction and wherever it lies, spans that much across the
-// columns or across the rows and crosses a lattice line, whose grid points there are the full
-// grid's: a level line is met on every lattice column at any grid row (a grid thinned both ways
-// could miss it between its rows).
+// piece. The lattice lines lie min_line_length / sqrt 2 apart, to the nearest grid step, so a
+// straight piece of the minimum length, whatever its direction and wherever it lies, spans that
+// much across the columns or across the rows (less half a step at worst) and crosses a lattice
+// line, whose grid points there are the full grid's: a level line is met on every lattice column
+// at any grid row (a grid thinned both ways could miss it between its rows). Rounded rather than
+// floored: the built-in grid of 10 px at the thin pass's 28 px keeps every 2nd line (1.98), not
+// every one, for the pass's cost.
 int ridge_anchor_lattice(int min_line_length, int scan_interval);
 // The thin-line pass's minimum length: kThinLengthShare of the detector's. A ridge is validated on
 // both of its flanks (a line's two edges at once), so a shorter piece of it is as much evidence as
 // an edge of the full length; and a far line reaches the drawing in short pieces, broken where
 // robots and posts stand on it (Bangkok's far penalty-area lines). Held out on the MSL venues:
-// Bangkok marking recall 0.771 -> 0.785 at precision 0.956 -> 0.959, every other venue the same
-// or better; at 0.5 of it Bordeaux's precision falls (docs/detector.md).
+// Bangkok marking recall 0.771 -> 0.785 at precision 0.956 -> 0.959, the other venues within
+// 0.002; at 0.5 of it Bordeaux's precision falls (docs/detector.md).
 inline constexpr double kThinLengthShare = 0.7;
 int thin_min_length(int min_line_length);
 // Blocks a band of `rows` rows `width` wide may list at most.
