@@ -128,6 +128,34 @@ TEST_F(SynthCli, AutolabelAndEvalAgainstTruth) {
   EXPECT_NE(bad.err.find("no image with ground truth"), std::string::npos) << bad.err;
 }
 
+// eval --per-image: each frame's own row under its group's, and its own scores in the JSON,
+// which add up to the group's.
+TEST_F(SynthCli, EvalPerImageGivesEachFramesRowAndTheyAddUpToItsGroup) {
+  const fs::path set = dir_ / "set";
+  ASSERT_EQ(run("synth --scene ssl --n 3 --seed 7 --quiet -o " + set.string(), dir_).code, 0);
+  const CliRun eval = run("eval --gt " + set.string() + " --per-image --json " + (dir_ / "s.json").string(), dir_);
+  ASSERT_EQ(eval.code, 0) << eval.err;
+  for (const char* name : {"  ssl_7_0000.png", "  ssl_7_0001.png", "  ssl_7_0002.png"})
+    EXPECT_NE(eval.out.find(name), std::string::npos) << eval.out;
+  const auto group = nlohmann::json::parse(slurp(dir_ / "s.json"))["groups"][0];
+  ASSERT_EQ(group["per_image"].size(), 3u);
+  double visible = 0, covered = 0;
+  long predicted = 0;
+  for (const auto& image : group["per_image"]) {
+    EXPECT_EQ(image["images"], 1);
+    visible += image["marking"]["visible_px"].get<double>(), covered += image["marking"]["covered_px"].get<double>();
+    predicted += image["marking"]["predicted"].get<long>();
+  }
+  EXPECT_GT(visible, 0);
+  EXPECT_NEAR(visible, group["marking"]["visible_px"].get<double>(), 1e-6);
+  EXPECT_NEAR(covered, group["marking"]["covered_px"].get<double>(), 1e-6);
+  EXPECT_EQ(predicted, group["marking"]["predicted"].get<long>());
+  // Without the flag, neither the rows nor the JSON's images.
+  const CliRun plain = run("eval --gt " + set.string() + " --json " + (dir_ / "p.json").string(), dir_);
+  EXPECT_EQ(plain.out.find("ssl_7_0000.png"), std::string::npos) << plain.out;
+  EXPECT_FALSE(nlohmann::json::parse(slurp(dir_ / "p.json"))["groups"][0].contains("per_image"));
+}
+
 // eval --hand's second table: the detected field boundary against the drawn one, per column the
 // drawing spans; a frame without field counts its height on each of them.
 TEST_F(SynthCli, EvalHandScoresTheFieldBoundaryAgainstTheDrawnOne) {

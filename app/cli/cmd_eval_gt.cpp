@@ -87,8 +87,11 @@ options:
   --max-distance PX  edge match distance (default 2.5)
   --min-width PX     painted parts narrower than this are not visible: they do not count in
                      recall, nor in the truth of junctions, their arms and the circle (default 1)
+  --per-image        also one row per image, under its group's row (in the boundary table too):
+                     which frames a set's figures come from
   --markdown         print the table as Markdown
-  --json OUT         write the scores as JSON (per group and total)
+  --json OUT         write the scores as JSON (per group and total; with --per-image each group's
+                     "per_image" too)
   --draw DIR         an overlay per image, DIR/<truth folder>/<name>.png: the segments as
                      `fieldlines detect --draw` draws them, and every truth line edge dotted green
                      where a segment of its class lies on it (what recall counts), red where only
@@ -103,6 +106,7 @@ examples:
   fieldlines eval --gt synth/ssl_test synth/kid_test --thresholds robot.json --markdown
   fieldlines eval --hand tests/data/hand_truth/msl-bangkok --data ../shared/data --thresholds msl.json
   fieldlines eval --hand tests/data/hand_truth/humanoid --data ../shared/data --draw overlays
+  fieldlines eval --hand tests/data/hand_truth/ssl --data ../shared/data --thresholds ssl.json --per-image
 )";
 
 // The detected field boundary against a hand-drawn one, per column the hand's polylines span: the
@@ -137,6 +141,17 @@ struct Group {
   HandBoundary hand_boundary;
   synth::CentreLineScore centre_lines;
   double detect_ms = 0;
+  Group& operator+=(const Group& o) {
+    score += o.score, features += o.features, ground += o.ground;
+    hand_boundary += o.hand_boundary, centre_lines += o.centre_lines, detect_ms += o.detect_ms;
+    return *this;
+  }
+};
+
+// One image's own scores (--per-image), under its group.
+struct ImageGroup {
+  std::string name;
+  Group group;
 };
 
 
@@ -358,7 +373,7 @@ int cmd_eval_gt(const Args& args) {
   const auto parsed = parse_or_print_help(
       args,
       {"--gt", "--hand", "--data", "--thresholds", "--max-distance", "--min-width", "--json", "--camera-error", "--draw"},
-      {"--markdown", "--features", "--truth-camera"},
+      {"--markdown", "--features", "--truth-camera", "--per-image"},
       kHelp);
   if (!parsed) return 0;
   const ParsedArgs& a = *parsed;
@@ -378,7 +393,7 @@ int cmd_eval_gt(const Args& args) {
   GtMatchParams match;
   match.max_distance_px = static_cast<float>(a.double_or("--max-distance", match.max_distance_px, 0.1, 50));
   match.min_width_px = static_cast<float>(a.double_or("--min-width", match.min_width_px, 0, 100));
-  const bool markdown = a.flag("--markdown");
+  const bool markdown = a.flag("--markdown"), per_image = a.flag("--per-image");
   const bool truth_camera = a.flag("--truth-camera");
   if (truth_camera && hand) throw Error("--truth-camera needs synthetic sets (--gt): hand-drawn truth has no camera");
   const CameraError camera_error = parse_camera_error(a.value("--camera-error"));
@@ -392,6 +407,7 @@ int cmd_eval_gt(const Args& args) {
   LineDetector detector(file.detector, file.thresholds);
   detector.set_find_field_boundary(features || hand || draw);
   std::map<std::pair<std::string, std::string>, Group> groups;
+  std::map<std::pair<std::string, std::string>, std::vector<ImageGroup>> images;  // --per-image
   Group total;
   int failed = 0;
   for (const EvalItem& load : items) {
@@ -423,11 +439,12 @@ int cmd_eval_gt(const Args& args) {
       }
       const HandBoundary hand_boundary = score_hand_boundary(item.boundary_rows, detector.field_boundary(), img.rows);
       const synth::CentreLineScore centre_lines = synth::score_centre_lines(item.truth, detector.features().markings, match);
-      Group& g = groups[{item.row, item.condition}];
-      for (Group* to : {&g, &total}) {
-        to->score += score, to->features += feature_score, to->ground += ground_score;
-        to->hand_boundary += hand_boundary, to->centre_lines += centre_lines, to->detect_ms += ms;
-      }
+      Group one;
+      one.score = score, one.features = feature_score, one.ground = ground_score;
+      one.hand_boundary = hand_boundary, one.centre_lines = centre_lines, one.detect_ms = ms;
+      groups[{item.row, item.condition}] += one;
+      total += one;
+      if (per_image) images[{item.row, item.condition}].push_back({item.image.filename().string(), std::move(one)});
     } catch (const Error& e) {
       std::fprintf(stderr, "fieldlines eval: %s\n", e.what());
       ++failed;
@@ -447,6 +464,15 @@ int cmd_eval_gt(const Args& args) {
     print_row(markdown, key.first, key.second, g);
     nlohmann::json j = to_json(g);
     j["scene"] = key.first, j["condition"] = key.second;
+    if (per_image) {
+      j["per_image"] = nlohmann::json::array();
+      for (const ImageGroup& im : images[key]) {
+        print_row(markdown, "  " + im.name, key.second, im.group);
+        nlohmann::json ij = to_json(im.group);
+        ij["image"] = im.name;
+        j["per_image"].push_back(std::move(ij));
+      }
+    }
     out["groups"].push_back(j);
   }
   print_row(markdown, "all", "all", total);
@@ -483,7 +509,11 @@ int cmd_eval_gt(const Args& args) {
     else
       std::printf("%-12s %6s %8s %10s %10s %10s %9s %9s\n", "folder", "images", "columns", "within 4px", "within 2%",
                   "median px", "centre P", "centre R");
-    for (const auto& [key, g] : groups) print_hand_boundary_row(markdown, key.first, g);
+    for (const auto& [key, g] : groups) {
+      print_hand_boundary_row(markdown, key.first, g);
+      if (per_image)
+        for (const ImageGroup& im : images[key]) print_hand_boundary_row(markdown, "  " + im.name, im.group);
+    }
     print_hand_boundary_row(markdown, "all", total);
   }
   out["total"] = to_json(total);
