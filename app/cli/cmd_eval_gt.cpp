@@ -154,6 +154,13 @@ struct ImageGroup {
   Group group;
 };
 
+// A row of the tables: a scene and condition's (or a hand-truth folder's) scores, and with
+// --per-image each of its images'.
+struct GroupRow {
+  Group sum;
+  std::vector<ImageGroup> images;
+};
+
 
 // "-" where a score is undefined (nothing predicted, or nothing visible: Kid has no wall).
 std::string fmt(double value, bool defined) {
@@ -406,8 +413,7 @@ int cmd_eval_gt(const Args& args) {
   const std::vector<EvalItem> items = hand ? hand_items(dirs, *data) : synth_items(dirs);
   LineDetector detector(file.detector, file.thresholds);
   detector.set_find_field_boundary(features || hand || draw);
-  std::map<std::pair<std::string, std::string>, Group> groups;
-  std::map<std::pair<std::string, std::string>, std::vector<ImageGroup>> images;  // --per-image
+  std::map<std::pair<std::string, std::string>, GroupRow> groups;
   Group total;
   int failed = 0;
   for (const EvalItem& load : items) {
@@ -442,9 +448,10 @@ int cmd_eval_gt(const Args& args) {
       Group one;
       one.score = score, one.features = feature_score, one.ground = ground_score;
       one.hand_boundary = hand_boundary, one.centre_lines = centre_lines, one.detect_ms = ms;
-      groups[{item.row, item.condition}] += one;
+      GroupRow& row = groups[{item.row, item.condition}];
+      row.sum += one;
       total += one;
-      if (per_image) images[{item.row, item.condition}].push_back({item.image.filename().string(), std::move(one)});
+      if (per_image) row.images.push_back({item.image.filename().string(), std::move(one)});
     } catch (const Error& e) {
       std::fprintf(stderr, "fieldlines eval: %s\n", e.what());
       ++failed;
@@ -460,13 +467,13 @@ int cmd_eval_gt(const Args& args) {
                 "bound P", "bound R", "segments", "det ms");
   }
   nlohmann::json out = {{"groups", nlohmann::json::array()}};
-  for (const auto& [key, g] : groups) {
-    print_row(markdown, key.first, key.second, g);
-    nlohmann::json j = to_json(g);
+  for (const auto& [key, row] : groups) {
+    print_row(markdown, key.first, key.second, row.sum);
+    nlohmann::json j = to_json(row.sum);
     j["scene"] = key.first, j["condition"] = key.second;
     if (per_image) {
       j["per_image"] = nlohmann::json::array();
-      for (const ImageGroup& im : images[key]) {
+      for (const ImageGroup& im : row.images) {
         print_row(markdown, "  " + im.name, key.second, im.group);
         nlohmann::json ij = to_json(im.group);
         ij["image"] = im.name;
@@ -486,7 +493,7 @@ int cmd_eval_gt(const Args& args) {
       std::printf("%-12s %-11s %6s %6s %7s %7s %7s %11s %7s %-14s %8s %8s\n", "scene", "condition", "true J", "det J",
                   "J prec", "J rec", "J type", "circles", "rate", "wrong/ellipses", "bound 4px", "mark on");
     }
-    for (const auto& [key, g] : groups) print_feature_row(markdown, key.first, key.second, g);
+    for (const auto& [key, row] : groups) print_feature_row(markdown, key.first, key.second, row.sum);
     print_feature_row(markdown, "all", "all", total);
   }
   if (features && truth_camera) {
@@ -498,7 +505,7 @@ int cmd_eval_gt(const Args& args) {
     else
       std::printf("%-12s %-11s %8s %8s %9s %9s %8s %11s %9s %8s\n", "scene", "condition", "J match", "J dist m",
                   "J err %", "J p90 %", "J 5 %", "circles", "C err cm", "C 10cm");
-    for (const auto& [key, g] : groups) print_ground_row(markdown, key.first, key.second, g);
+    for (const auto& [key, row] : groups) print_ground_row(markdown, key.first, key.second, row.sum);
     print_ground_row(markdown, "all", "all", total);
   }
   if (hand) {
@@ -509,10 +516,9 @@ int cmd_eval_gt(const Args& args) {
     else
       std::printf("%-12s %6s %8s %10s %10s %10s %9s %9s\n", "folder", "images", "columns", "within 4px", "within 2%",
                   "median px", "centre P", "centre R");
-    for (const auto& [key, g] : groups) {
-      print_hand_boundary_row(markdown, key.first, g);
-      if (per_image)
-        for (const ImageGroup& im : images[key]) print_hand_boundary_row(markdown, "  " + im.name, im.group);
+    for (const auto& [key, row] : groups) {
+      print_hand_boundary_row(markdown, key.first, row.sum);
+      for (const ImageGroup& im : row.images) print_hand_boundary_row(markdown, "  " + im.name, im.group);
     }
     print_hand_boundary_row(markdown, "all", total);
   }
