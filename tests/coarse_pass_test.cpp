@@ -131,6 +131,39 @@ TEST(CoarsePass, AboveTheNearRowsItKeepsTheLinesItResolves) {
   EXPECT_LT(along_edge(detect(board, 3, 0.5, 0.25), 181), 100) << "which has no twin, and is dropped";
 }
 
+// A camera looking down at the turf (a Humanoid robot's head tilted to the ball at its feet) has
+// no far rows: the wide line's edges on that turf, 40 px wide in rows 60-132, are drawn by the
+// coarse pass from the frame's top when the field boundary is measured and the turf fills the
+// top. With a wall across the top rows, the field's edge is in view: those rows are far, and only
+// the full scale draws there, which breaks up on this turf.
+TEST(CoarsePass, LookingDownAtTheTurfItsBandStartsAtTheFramesTop) {
+  const auto frame_with = [](bool wall) {
+    cv::RNG rng(3);
+    cv::Mat clean = textured_turf(rng);
+    for (int x = 0; x < 640; ++x) {
+      const int top = static_cast<int>(60 + 0.05 * x) + rng.uniform(-3, 4);
+      for (int y = top; y < top + 40; ++y) clean.at<cv::Vec3b>(y, x) = {235, 240, 235};
+    }
+    if (wall) clean(cv::Rect(0, 0, 640, 30)).setTo(cv::Scalar(40, 40, 40));
+    return test::noisy(clean);
+  };
+  const auto edges = [](const cv::Mat& frame, bool boundary, bool* fills_top = nullptr) {
+    DetectorParams p;
+    p.coarse_scale = 3;
+    LineDetector detector(p);
+    detector.set_find_field_boundary(boundary);
+    const std::vector<Segment> segments = detector.detect(frame);
+    if (fills_top) *fills_top = detector.field_boundary().fills_top();
+    return along_edge(segments, 61) + along_edge(segments, 101);
+  };
+  bool fills_top = false;
+  EXPECT_GT(edges(frame_with(false), true, &fills_top), 900) << "the coarse pass draws both edges end to end";
+  EXPECT_TRUE(fills_top);
+  EXPECT_LT(edges(frame_with(false), false), 100) << "without the boundary the band starts at coarse_from";
+  EXPECT_LT(edges(frame_with(true), true, &fills_top), 100) << "the field's edge in view: these rows are far";
+  EXPECT_FALSE(fills_top);
+}
+
 // A painted line's two edges, sharp at the full scale, stay two segments with the coarse pass:
 // the coarse ones along them are dropped.
 TEST(CoarsePass, OnePaintedEdgeStaysOneSegment) {

@@ -283,6 +283,9 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   if (thin)
     ridge = impl_->thin_engine.ridge_target(bgr->cols, thin_band_end(params_, bgr->rows), params_.thin_reach,
                                             gradient_threshold);
+  // The boundary first: the coarse pass's band starts at the frame's top when the field fills it.
+  FieldFeatures& f = impl_->features;
+  if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary, {}, &impl_->turf);
   impl_->engine.run(*bgr, params_, gradient_threshold, out, thin ? &ridge : nullptr);
   if (params_.coarse_scale > 1) add_coarse(*bgr, gradient_threshold, out);
   const std::size_t thin_from = out.size();  // the thin-line pass's segments come last
@@ -290,8 +293,6 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   std::optional<float> gain;
   if (thresholds_.light.enabled && impl_->field)
     gain = light_gain(thresholds_.light.reference_field, *impl_->field);
-  FieldFeatures& f = impl_->features;
-  if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary, {}, &impl_->turf);
   label(out, gain, thresholds_, f.field_boundary);
   // A line's centre is no edge of the field: a thin-line segment is a marking or nothing.
   for (std::size_t i = thin_from; i < out.size(); ++i)
@@ -311,7 +312,10 @@ void LineDetector::add_coarse(const cv::Mat& bgr, int gradient_threshold, std::v
   const int f = params_.coarse_scale;
   const auto row_of = [&](double share) { return std::clamp(static_cast<int>(std::lround(share * bgr.rows)), 0, bgr.rows); };
   // The band starts on a whole cell of the frame's grid: where its top lies does not move the cells.
-  const int alone = row_of(params_.coarse_from), top = std::min(alone, row_of(params_.coarse_twins_from)) / f * f;
+  // A camera looking down at the turf (the field fills the frame's top) has no far rows.
+  const bool near_only = impl_->features.field_boundary.fills_top();
+  const int alone = near_only ? 0 : row_of(params_.coarse_from);
+  const int top = std::min(alone, row_of(params_.coarse_twins_from)) / f * f;
   const int w = bgr.cols / f, h = (bgr.rows - top) / f;
   if (w < 3 || h < 3) return;
   box_downsample(bgr(cv::Rect(0, top, w * f, h * f)), f, impl_->coarse_bgr, impl_->coarse_avx2);

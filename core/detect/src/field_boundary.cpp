@@ -135,6 +135,13 @@ float FieldBoundary::y_at(float x) const {
   return b.x > a.x ? a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x) : b.y;
 }
 
+bool FieldBoundary::fills_top() const {
+  // A column's scan samples every row_step (2) rows from the bottom: its top sample is row 0 or 1.
+  constexpr float kTopRow = 1;
+  const auto at_top = std::ranges::count_if(columns, [](const Point& c) { return c.y <= kTopRow; });
+  return !columns.empty() && 2 * static_cast<std::size_t>(at_top) >= columns.size();
+}
+
 namespace {
 constexpr float kBlurPx = 4;  // a line's own blur: how far above the boundary still counts as on it
 }  // namespace

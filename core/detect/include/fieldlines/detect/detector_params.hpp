@@ -67,7 +67,10 @@ struct DetectorParams {
   // far rows hold lines a pixel or two wide that a coarser scale loses. With coarse_scale above
   // 1, the rows from coarse_from (a share of the height, from the top) down are detected a second
   // time at 1 / coarse_scale of the size, and a coarse segment joins the full-scale ones where
-  // none of them lies along it (detector.cpp). 1: off, the method's one scale.
+  // none of them lies along it (detector.cpp). 1: off, the method's one scale. When the field
+  // boundary is measured (its gate, the features) and the turf fills the frame's top
+  // (FieldBoundary::fills_top: a camera looking down at its feet), no row is far: the band
+  // starts at the top. Held-out Humanoid halves: on any segment 0.894 -> 0.900, marking the same.
   int coarse_scale = 1;
   double coarse_from = 0.5;
   // ...and from coarse_twins_from down to coarse_from, the lines the coarse scale resolves: a

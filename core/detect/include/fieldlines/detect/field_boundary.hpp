@@ -123,6 +123,10 @@ struct FieldBoundary {
   // The boundary's row at column x (linear between hull points, held flat past the ends);
   // -1 when empty (every row is below it).
   float y_at(float x) const;
+  // Whether the field reaches the frame's top row in at least half of the columns with field:
+  // the camera looks down at the turf, and no row of the frame is far (the coarse pass's band
+  // then starts at the top: DetectorParams::coarse_from).
+  bool fills_top() const;
 };
 
 // Whether the point (x, y) lies above the boundary by more than a line's own blur (4 px); false
