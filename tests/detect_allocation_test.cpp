@@ -283,12 +283,16 @@ TEST(DetectAllocations, NoneWithTheCoarsePass) {
 
 // The thin-line pass (DetectorParams::thin_reach) keeps its ridge maps and the list of what it
 // wrote, and reads the gradient pass's kept smoothed grey: still nothing, alone, with every
-// feature stage, and when frame sizes alternate.
+// feature stage, and when frame sizes alternate; nor with the boundary's gate, which starts its
+// rows at each frame's field top.
 TEST(DetectAllocations, NoneWithTheThinPass) {
   const auto [frames, names] = synthetic_frames(4, 5);
   DetectorParams thin;
   thin.thin_reach = 3;
   expect_warm_detect_allocates_nothing(frames, names, thin);
+  Thresholds gated;
+  gated.field_boundary_gate = true;
+  expect_warm_detect_allocates_nothing(frames, names, thin, gated);
   DetectorParams every = all_features();
   every.thin_reach = 2;
   every.thin_to = 1.0;
@@ -380,7 +384,8 @@ std::vector<fs::path> images_in(const fs::path& dir) {
   return paths;
 }
 
-void expect_none_on_folder(const fs::path& dir, std::size_t expected_frames, const DetectorParams& params = {}) {
+void expect_none_on_folder(const fs::path& dir, std::size_t expected_frames, const DetectorParams& params = {},
+                           const Thresholds& thresholds = {}) {
   SCOPED_TRACE(params.intersections ? "all features on" : (params.stripes ? "stripes on" : "stripes off"));
   std::vector<cv::Mat> frames;
   std::vector<std::string> names;
@@ -391,7 +396,7 @@ void expect_none_on_folder(const fs::path& dir, std::size_t expected_frames, con
     names.push_back(p.filename().string());
   }
   ASSERT_EQ(frames.size(), expected_frames) << dir;
-  expect_warm_detect_allocates_nothing(frames, names, params);
+  expect_warm_detect_allocates_nothing(frames, names, params, thresholds);
 }
 
 TEST(DetectAllocations, NoneOnTheAuthorsSslFrames) {
@@ -423,6 +428,11 @@ TEST(DetectAllocations, NoneOnHumanoidFramesOfTwoSizes) {
   stripes.stripes = true;
   expect_none_on_folder(dir, 9, stripes);
   expect_none_on_folder(dir, 9, all_features());
+  DetectorParams thin;
+  thin.thin_reach = 2;
+  Thresholds gated;  // the thin pass's rows from each frame's field top, which moves frame to frame
+  gated.field_boundary_gate = true;
+  expect_none_on_folder(dir, 9, thin, gated);
 }
 
 }  // namespace

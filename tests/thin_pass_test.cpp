@@ -26,13 +26,16 @@ const cv::Scalar kFaintPaint(test::kTurf[0] + 0.25 * (255 - test::kTurf[0]), tes
 // 3 px above it (as the SSL lab's far lines run along the wall's foot).
 double centre_y(double x) { return 100 + 12.0 / 560 * (x - 40); }
 
-cv::Mat far_line(bool wall, int width = 2) {
+// With `field_from`, turf only from that row down under a dark band 40 px high: the line lies
+// on a turf-green strip off the field (a poster on the wall, the next field beyond a floor strip).
+cv::Mat far_line(bool wall, int width = 2, int field_from = 0) {
   cv::Mat clean(480, 640, CV_8UC3, test::kTurf);
   if (wall) {
     const int top = 3 + width / 2 + 1;
     const std::vector<cv::Point> dark{{0, 0}, {639, 0}, {639, cvRound(centre_y(639)) - top}, {0, cvRound(centre_y(0)) - top}};
     cv::fillConvexPoly(clean, dark, test::kDark);
   }
+  if (field_from > 40) clean(cv::Rect(0, field_from - 40, 640, 40)).setTo(test::kDark);
   cv::line(clean, {40, 100}, {600, 112}, kFaintPaint, width, cv::LINE_AA);
   return test::noisy(clean);
 }
@@ -111,6 +114,24 @@ TEST(ThinPass, BelowItsBandNothingChanges) {
   const std::vector<Segment> without = plain.detect(frame), with = thin.detect(frame);
   ASSERT_EQ(with.size(), without.size());
   for (std::size_t i = 0; i < with.size(); ++i) EXPECT_EQ(with[i].x0, without[i].x0);
+}
+
+// With the field boundary gating the markings, the pass draws from a band above the field's top
+// down (a marking above it would be none): the far line on a strip of turf above the field,
+// beyond a dark band, gets no centre segment, and the rest is as without the pass. Without the
+// gate it gets one; with the gate and the field reaching up to the wall, it does too.
+TEST(ThinPass, WithTheBoundaryGateItDrawsFromTheFieldsTopDown) {
+  Thresholds gated;
+  gated.field_boundary_gate = true;
+  LineDetector plain(venue_detector(0), gated), thin(venue_detector(2), gated), ungated(venue_detector(2));
+  const cv::Mat off_field = far_line(true, 2, 200);
+  const std::vector<Segment> without = plain.detect(off_field), with = thin.detect(off_field);
+  ASSERT_FALSE(thin.field_boundary().empty());
+  EXPECT_NEAR(thin.field_boundary().y_at(320), 200, 4) << "the field's top: the strip is off the field";
+  EXPECT_TRUE(on_centre(with, 0.75).empty());
+  EXPECT_EQ(with.size(), without.size());
+  EXPECT_EQ(on_centre(ungated.detect(off_field), 0.75).size(), 1u);
+  EXPECT_EQ(on_centre(thin.detect(far_line(true)), 0.75).size(), 1u);
 }
 
 // This machine may take the AVX2 ridge rows; the SSE2 / NEON ones (what an arm64 robot runs)

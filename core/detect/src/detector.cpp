@@ -217,6 +217,14 @@ bool has_twin(const Segment& s, std::span<const Segment> coarse, float scale, co
   return std::count(twin.begin(), twin.end(), true) >= 3;
 }
 
+// The first row the thin-line pass draws when the field boundary gates the markings: a band
+// (along_band_px) above the boundary's highest point; 0 with no boundary.
+int thin_band_start(const FieldBoundary& boundary, int rows) {
+  if (boundary.empty()) return 0;
+  const float top = std::ranges::min(boundary.points, {}, &FieldBoundary::Point::y).y;
+  return std::max(0, static_cast<int>(top - along_band_px(rows)));
+}
+
 // The rows [0, end) of a frame `rows` high that the thin-line pass draws (thin_to of them).
 int thin_band_end(const DetectorParams& params, int rows) {
   return std::clamp(static_cast<int>(std::lround(params.thin_to * rows)), 0, rows);
@@ -277,15 +285,19 @@ void LineDetector::detect(const cv::Mat& image, std::vector<Segment>& out) {
   const FieldColours colours = stripe_colours();
   const int gradient_threshold =
       adapted_gradient_threshold(params_.gradient_threshold, params_.dark_field, impl_->field);
-  // The thin-line pass's ridge rows come out of the frame's own gradient pass (ridge_pass.hpp).
-  const bool thin = params_.thin_reach > 0;
-  elsed::RidgeTarget ridge;
-  if (thin)
-    ridge = impl_->thin_engine.ridge_target(bgr->cols, thin_band_end(params_, bgr->rows), params_.thin_reach,
-                                            gradient_threshold);
   // The boundary first: the coarse pass's band starts at the frame's top when the field fills it.
   FieldFeatures& f = impl_->features;
   if (boundary && impl_->field) find_field_boundary(*bgr, *impl_->field, f.field_boundary, {}, &impl_->turf);
+  // The thin-line pass's ridge rows come out of the frame's own gradient pass (ridge_pass.hpp).
+  // When the boundary gates the markings, they start a band above the field's top: a marking
+  // above it would be none, and the walls, people and lights there cost the pass time.
+  const bool thin = params_.thin_reach > 0;
+  elsed::RidgeTarget ridge;
+  if (thin) {
+    const int first = thresholds_.field_boundary_gate ? thin_band_start(f.field_boundary, bgr->rows) : 0;
+    ridge = impl_->thin_engine.ridge_target(bgr->cols, first, thin_band_end(params_, bgr->rows), params_.thin_reach,
+                                            gradient_threshold);
+  }
   impl_->engine.run(*bgr, params_, gradient_threshold, out, thin ? &ridge : nullptr);
   if (params_.coarse_scale > 1) add_coarse(*bgr, gradient_threshold, out);
   const std::size_t thin_from = out.size();  // the thin-line pass's segments come last
@@ -366,7 +378,7 @@ void LineDetector::find_pieces(const cv::Mat& bgr, std::optional<float> gain, st
   std::vector<int>& rows = impl_->piece_rows;
   rows.clear();
   if (params_.centre_circle && !f.field_boundary.empty()) {
-    const float margin = std::max(6.f, 0.03f * float(bgr.rows));  // place_of()'s band along it
+    const float margin = along_band_px(bgr.rows);
     rows.resize(static_cast<std::size_t>(bgr.cols));
     for (int x = 0; x < bgr.cols; ++x)
       rows[static_cast<std::size_t>(x)] = static_cast<int>(f.field_boundary.y_at(float(x)) - margin);

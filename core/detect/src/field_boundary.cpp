@@ -150,12 +150,16 @@ bool lies_above(float x, float y, const FieldBoundary& boundary) {
   return !boundary.empty() && y < boundary.y_at(x) - kBlurPx;
 }
 
-BoundaryPlace place_of(const Segment& s, const FieldBoundary& boundary) {
+float along_band_px(int image_height) {
   constexpr float kAlongShare = 0.03f, kMinAlongPx = 6;
+  return std::max(kMinAlongPx, kAlongShare * float(image_height));
+}
+
+BoundaryPlace place_of(const Segment& s, const FieldBoundary& boundary) {
   if (boundary.empty()) return BoundaryPlace::Below;
   const float mx = 0.5f * (s.x0 + s.x1), my = 0.5f * (s.y0 + s.y1);
   const float d = my - boundary.y_at(mx);
-  if (std::abs(d) <= std::max(kMinAlongPx, kAlongShare * float(boundary.image_height))) return BoundaryPlace::Along;
+  if (std::abs(d) <= along_band_px(boundary.image_height)) return BoundaryPlace::Along;
   return lies_above(mx, my, boundary) ? BoundaryPlace::Above : BoundaryPlace::Below;
 }
 

@@ -163,10 +163,10 @@ void ElsedEngine::run(const cv::Mat& bgr, const DetectorParams& params, int grad
   draw_and_validate(bgr, params, params.min_line_length, {}, out);
 }
 
-elsed::RidgeTarget ElsedEngine::ridge_target(int width, int rows, int reach, int threshold) {
+elsed::RidgeTarget ElsedEngine::ridge_target(int width, int first_row, int rows, int reach, int threshold) {
   elsed::ready_ridge_maps(width, rows, maps_, ridge_blocks_);
-  return {std::clamp(reach, 1, elsed::kMaxRidgeReach), std::clamp(threshold, 1, 32767), ridge_avx2_, &maps_,
-          &ridge_blocks_};
+  return {std::clamp(reach, 1, elsed::kMaxRidgeReach), std::max(first_row, 0), std::clamp(threshold, 1, 32767),
+          ridge_avx2_, &maps_, &ridge_blocks_};
 }
 
 void ElsedEngine::draw_ridges(const cv::Mat& bgr, const DetectorParams& params, int reach, std::vector<Segment>& out) {

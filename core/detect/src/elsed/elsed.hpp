@@ -33,7 +33,7 @@ class ElsedEngine {
   // frame's run() (another engine's) writes them. Then draw_ridges(): the same anchors, drawing
   // and validation on them; segments along the lines' centres, with the lines' colours
   // (colour_gradients.hpp), appended to `out`.
-  elsed::RidgeTarget ridge_target(int width, int rows, int reach, int threshold);
+  elsed::RidgeTarget ridge_target(int width, int first_row, int rows, int reach, int threshold);
   void draw_ridges(const cv::Mat& bgr, const DetectorParams& params, int reach, std::vector<Segment>& out);
   // The first stage alone (what run() starts with): fills gradients().
   void compute_gradients(const cv::Mat& bgr, const DetectorParams& params, int gradient_threshold,

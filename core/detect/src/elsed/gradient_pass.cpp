@@ -262,19 +262,23 @@ void GradientPass::run_rows(const cv::Mat& bgr, GradientMaps& maps, int row_begi
                             RidgeBlocks* blocks) {
   const int w = bgr.cols, h = bgr.rows, r = radius_, taps = 2 * r + 1;
   if (row_begin >= row_end) return;
-  // The ridge rows of this band (ridge_pass.hpp): [reach, min(band, h - reach)).
+  // The ridge rows of this band (ridge_pass.hpp): [max(reach, first_row), min(band, h - reach)).
   const int reach = ridge ? ridge->reach : 0;
-  const int ridge_first = std::max(row_begin, reach);
+  const int band_first = std::max(row_begin, reach);
+  const int ridge_first = std::max(band_first, ridge ? ridge->first_row : 0);
   const int ridge_last = ridge ? std::min({row_end, ridge->maps->height, h - reach}) : 0;
-  const bool ridges = blocks && ridge_first < ridge_last;
-  const int slots = ridges ? std::max(3, 2 * reach + 1) : 3;  // the ring holds what both read
+  // The buffers are sized for the band's ridge rows whatever first_row is: a frame's field top
+  // moves, and a warm frame allocates nothing.
+  const bool ridge_band = blocks && band_first < ridge_last;
+  const bool ridges = ridge_band && ridge_first < ridge_last;
+  const int slots = ridge_band ? std::max(3, 2 * reach + 1) : 3;  // the ring holds what both read
   const std::size_t h_stride = static_cast<std::size_t>(w) + kSlack;
   const std::size_t b_stride = static_cast<std::size_t>(w) + 2 + kSlack;
   // Grow only: a smaller frame reuses the larger one's capacity.
   grey_.resize(std::max(grey_.size(), static_cast<std::size_t>(w + 2 * r + kSlack)));
   hrows_.resize(std::max(hrows_.size(), h_stride * static_cast<std::size_t>(taps)));
   brows_.resize(std::max(brows_.size(), b_stride * static_cast<std::size_t>(slots)));
-  if (ridges) blocks->starts.resize(std::max(blocks->starts.size(), blocks->count + max_ridge_blocks(w, ridge_last - ridge_first)));
+  if (ridge_band) blocks->starts.resize(std::max(blocks->starts.size(), blocks->count + max_ridge_blocks(w, ridge_last - band_first)));
 
   // Sobel row y reads smoothed rows y-1..y+1 (replicated at the edges), ridge row y rows
   // y-reach..y+reach; smoothed row yb reads grey rows yb-r..yb+r (reflected). `virtual_row` walks

@@ -45,6 +45,7 @@ struct RidgeBlocks {
 // the list of what it wrote there.
 struct RidgeTarget {
   int reach = 1;       // 1..kMaxRidgeReach (ElsedEngine::ridge_target clamps it)
+  int first_row = 0;   // no ridge row above this one (the field's top: painted lines lie below it)
   int threshold = 1;   // on mag, 1..32767 (likewise)
   bool use_avx2 = false;
   GradientMaps* maps = nullptr;

@@ -84,6 +84,8 @@ struct DetectorParams {
   // above 0, the rows above thin_to (a share of the height) are drawn a second time on that
   // ridge (lines up to 2 thin_reach - 1 px wide), and a segment along a line's centre joins the
   // others where they do not already hold both of its edges (detector.cpp). 0: off.
+  // With the field boundary's gate (Thresholds::field_boundary_gate), from a band above the
+  // field's top only (a marking above it would be none).
   int thin_reach = 0;
   double thin_to = 0.6;
   bool operator==(const DetectorParams&) const = default;

@@ -134,8 +134,11 @@ struct FieldBoundary {
 bool lies_above(float x, float y, const FieldBoundary& boundary);
 
 // Where a segment's midpoint lies: above the boundary by more than a line's own blur, along it
-// (within 3 % of the image height, at least 6 px), or below it. Below when the boundary is empty.
+// (within along_band_px), or below it. Below when the boundary is empty.
 enum class BoundaryPlace { Above, Along, Below };
+// The band along the boundary, either side, px: 3 % of the image height, at least 6 px (its blur
+// and the hull's chords over a far edge).
+float along_band_px(int image_height);
 BoundaryPlace place_of(const Segment& segment, const FieldBoundary& boundary);
 
 // The segment's label under the gate: a marking above the boundary and a boundary edge not along
