@@ -31,17 +31,20 @@ cv::Mat textured_turf(cv::RNG& rng) {
   return clean;
 }
 
-// That turf, a white line 40 px wide from row 380 (left) to 412 (right) whose edges jump by up
-// to 3 px from column to column, and camera noise.
-cv::Mat textured_turf_with_a_near_line() {
+// That turf with a white line `width` px wide whose top edge runs from row `top` (left) to top +
+// 32 (right), its edges jumping by up to 3 px from column to column; no camera noise yet.
+cv::Mat turf_with_a_ragged_line(int top, int width) {
   cv::RNG rng(3);
   cv::Mat clean = textured_turf(rng);
   for (int x = 0; x < 640; ++x) {
-    const int top = static_cast<int>(380 + 0.05 * x) + rng.uniform(-3, 4);
-    for (int y = top; y < std::min(top + 40, 480); ++y) clean.at<cv::Vec3b>(y, x) = {235, 240, 235};
+    const int from = static_cast<int>(top + 0.05 * x) + rng.uniform(-3, 4);
+    for (int y = from; y < std::min(from + width, 480); ++y) clean.at<cv::Vec3b>(y, x) = {235, 240, 235};
   }
-  return test::noisy(clean);
+  return clean;
 }
+
+// The near line: 40 px wide from row 380, and camera noise.
+cv::Mat textured_turf_with_a_near_line() { return test::noisy(turf_with_a_ragged_line(380, 40)); }
 
 // Length of the segments that run along the edge from (0, y0) to (639, y0 + 32): parallel within
 // 5 degrees, both ends within 4 px of it.
@@ -112,15 +115,7 @@ TEST(CoarsePass, ItsSegmentsOnACurvedLineStayOnTheEdge) {
 // its scale it blurs both edges into one segment, off either (here: one edge alone, a white
 // board's foot). The wide line is the near one's, 24 px wide, raised to rows 180-212.
 TEST(CoarsePass, AboveTheNearRowsItKeepsTheLinesItResolves) {
-  const auto frame_with = [](bool line) {
-    cv::RNG rng(3);
-    cv::Mat clean = textured_turf(rng);
-    for (int x = 0; x < 640; ++x) {
-      const int top = static_cast<int>(180 + 0.05 * x) + rng.uniform(-3, 4);
-      for (int y = top; y < (line ? top + 24 : 480); ++y) clean.at<cv::Vec3b>(y, x) = {235, 240, 235};
-    }
-    return test::noisy(clean);
-  };
+  const auto frame_with = [](bool line) { return test::noisy(turf_with_a_ragged_line(180, line ? 24 : 480)); };
   const cv::Mat line = frame_with(true), board = frame_with(false);
   const auto edges = [](const std::vector<Segment>& segments) {
     return along_edge(segments, 181) + along_edge(segments, 205);
@@ -138,12 +133,7 @@ TEST(CoarsePass, AboveTheNearRowsItKeepsTheLinesItResolves) {
 // the full scale draws there, which breaks up on this turf.
 TEST(CoarsePass, LookingDownAtTheTurfItsBandStartsAtTheFramesTop) {
   const auto frame_with = [](bool wall) {
-    cv::RNG rng(3);
-    cv::Mat clean = textured_turf(rng);
-    for (int x = 0; x < 640; ++x) {
-      const int top = static_cast<int>(60 + 0.05 * x) + rng.uniform(-3, 4);
-      for (int y = top; y < top + 40; ++y) clean.at<cv::Vec3b>(y, x) = {235, 240, 235};
-    }
+    cv::Mat clean = turf_with_a_ragged_line(60, 40);
     if (wall) clean(cv::Rect(0, 0, 640, 30)).setTo(cv::Scalar(40, 40, 40));
     return test::noisy(clean);
   };
