@@ -221,8 +221,7 @@ bool has_twin(const Segment& s, std::span<const Segment> coarse, float scale, co
 // (along_band_px) above the boundary's highest point; 0 with no boundary.
 int thin_band_start(const FieldBoundary& boundary, int rows) {
   if (boundary.empty()) return 0;
-  const float top = std::ranges::min(boundary.points, {}, &FieldBoundary::Point::y).y;
-  return std::max(0, static_cast<int>(top - along_band_px(rows)));
+  return std::max(0, static_cast<int>(boundary.highest() - along_band_px(rows)));
 }
 
 // The rows [0, end) of a frame `rows` high that the thin-line pass draws (thin_to of them).

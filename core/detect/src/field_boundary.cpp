@@ -135,6 +135,10 @@ float FieldBoundary::y_at(float x) const {
   return b.x > a.x ? a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x) : b.y;
 }
 
+float FieldBoundary::highest() const {
+  return points.empty() ? -1.f : std::ranges::min(points, {}, &Point::y).y;
+}
+
 bool FieldBoundary::fills_top() const {
   // A column's scan samples every row_step (2) rows from the bottom: its top sample is row 0 or 1.
   constexpr float kTopRow = 1;
@@ -260,9 +264,7 @@ void find_field_boundary(const cv::Mat& bgr8, const Rgb& field, FieldBoundary& o
   // highest point by more than `past_occluder_rise` of the gap. The next field beyond a floor
   // strip, a green poster over a wall, lie higher than that (their gap alone is longer).
   const double past_run = params.past_occluder_run * gap;
-  float highest = out.points.front().y;
-  for (const Point& q : out.points) highest = std::min(highest, q.y);
-  const int limit = static_cast<int>(std::floor(highest - params.past_occluder_rise * gap));
+  const int limit = static_cast<int>(std::floor(out.highest() - params.past_occluder_rise * gap));
   // The scans go a gap above `limit`: turf still going on there has no top below `limit`.
   const int ceiling = std::max(0, limit - gap);
   bool raised = false;

@@ -123,6 +123,8 @@ struct FieldBoundary {
   // The boundary's row at column x (linear between hull points, held flat past the ends);
   // -1 when empty (every row is below it).
   float y_at(float x) const;
+  // The row of the boundary's highest point (its least y); -1 when empty.
+  float highest() const;
   // Whether the field reaches the frame's top row in at least half of the columns with field:
   // the camera looks down at the turf, and no row of the frame is far (the coarse pass's band
   // then starts at the top: DetectorParams::coarse_from).
