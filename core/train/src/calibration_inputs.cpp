@@ -14,13 +14,21 @@ void CalibrationInputs::add_image(LineDetector& detector, const cv::Mat& image) 
   detector.set_find_field_boundary(true);
   detector.detect(image, found_);
   ++frames_;
+  // A segment along a line's centre (the thin-line pass's) is no edge of the field.
+  const std::size_t centres = detector.centre_lines_from();
   if (const std::optional<Rgb>& field = detector.field_colour()) {
     const FieldBoundary& boundary = detector.field_boundary();
-    std::erase_if(found_, [&](const Segment& s) { return place_of(s, boundary) == BoundaryPlace::Above; });
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < found_.size(); ++i) {
+      const BoundaryPlace place = place_of(found_[i], boundary);
+      if (place == BoundaryPlace::Above) continue;
+      boundary_candidate_.push_back(place == BoundaryPlace::Along && i < centres);
+      found_[kept++] = found_[i];
+    }
+    found_.resize(kept);
     fields_.push_back({segments_.size(), segments_.size() + found_.size(), *field});
-    for (const Segment& s : found_) boundary_candidate_.push_back(place_of(s, boundary) == BoundaryPlace::Along);
   } else {
-    boundary_candidate_.insert(boundary_candidate_.end(), found_.size(), 1);
+    for (std::size_t i = 0; i < found_.size(); ++i) boundary_candidate_.push_back(i < centres);
   }
   add_marking_candidates(image, detector.stripe_colours());
   segments_.insert(segments_.end(), found_.begin(), found_.end());

@@ -68,6 +68,10 @@ class LineDetector {
   // when DetectorParams::stripes is on (stripes.hpp), the junctions when intersections is on
   // (intersections.hpp), the field boundary as field_boundary() has it; empty otherwise.
   const FieldFeatures& features() const;
+  // Where the last detect()'s segments along lines' centres begin (the thin-line pass's and its
+  // far lines along the field boundary come last): those from this index on are no edge of the
+  // field, so never a boundary; the segments' count when there are none.
+  std::size_t centre_lines_from() const { return centre_lines_from_; }
 
   // The camera over the field for the next detect() calls (ground_camera.hpp): with it, the
   // centre circle is also fitted on the turf as a circle of DetectorParams::centre_circle_radius,
@@ -93,9 +97,13 @@ class LineDetector {
   void add_coarse(const cv::Mat& bgr, int gradient_threshold, std::vector<Segment>& out);
   // The thin-line pass of DetectorParams::thin_reach: its segments where no two edges are.
   void add_thin(const cv::Mat& bgr, std::vector<Segment>& out);
+  // ...and its far lines along the field boundary (DetectorParams::thin_along_boundary).
+  void add_along_boundary(const cv::Mat& bgr, int gradient_threshold, std::optional<float> gain,
+                          std::vector<Segment>& out);
   DetectorParams params_;
   Thresholds thresholds_;
   bool find_boundary_ = false;
+  std::size_t centre_lines_from_ = 0;
   std::optional<GroundCamera> camera_;
   GroundFeatureParams ground_params_;
   std::unique_ptr<Impl> impl_;

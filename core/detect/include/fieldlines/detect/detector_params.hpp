@@ -88,6 +88,11 @@ struct DetectorParams {
   // field's top only (a marking above it would be none).
   int thin_reach = 0;
   double thin_to = 0.6;
+  // ...and, when the field boundary is measured (its gate, the features), the far lines along it:
+  // within this share of the height below the boundary, the brightness averaged over runs of
+  // columns at each offset from it finds a line whose ridge on any one column is below the
+  // pass's threshold (the far touch line blurred into a wall's foot; along_boundary.hpp). 0: off.
+  double thin_along_boundary = 0.05;
   bool operator==(const DetectorParams&) const = default;
 };
 
@@ -113,7 +118,7 @@ struct ParamSpec {
   bool in_files = true;     // written into and read from thresholds and project files
 };
 
-inline constexpr std::array<ParamSpec, 31> kDetectorParamSpecs{{
+inline constexpr std::array<ParamSpec, 32> kDetectorParamSpecs{{
     {.name = "gaussian_kernel", .member = &DetectorParams::gaussian_kernel, .range = {0, 31}, .unit = "px",
      .help = "smoothing kernel size, odd; below 3: no smoothing", .odd = true},
     {.name = "gaussian_sigma", .member = &DetectorParams::gaussian_sigma, .range = {0, 20, true}, .unit = "px",
@@ -185,6 +190,9 @@ inline constexpr std::array<ParamSpec, 31> kDetectorParamSpecs{{
      .slider = {0, 4}},
     {.name = "thin_to", .member = &DetectorParams::thin_to, .range = {0, 1},
      .help = "the thin-line pass covers the rows above this share of the height", .slider = {0, 1}},
+    {.name = "thin_along_boundary", .member = &DetectorParams::thin_along_boundary, .range = {0, 0.25},
+     .help = "with the thin-line pass and the field boundary, also find far lines within this share of the height below the boundary; 0: off",
+     .slider = {0, 0.25}},
 }};
 
 // The spec named `name`, or nullptr.
