@@ -20,6 +20,7 @@
 #include "fieldlines/train/detector_calibration.hpp"
 #include "fieldlines/train/metrics.hpp"
 #include "known_features.hpp"
+#include "painted_field.hpp"
 #include "shared_data.hpp"
 
 namespace fl = fieldlines;
@@ -347,6 +348,35 @@ TEST(CalibrationInputs, FlagsTheStripesAsMarkingCandidates) {
   unchecked.add_segments(checked.segments());
   EXPECT_EQ(std::count(unchecked.marking_candidates().begin(), unchecked.marking_candidates().end(), 1),
             static_cast<long>(unchecked.segments().size()));
+}
+
+// A segment along a line's centre (the thin-line pass's) is no edge of the field: along the
+// boundary it is no boundary candidate, while the wall's own edge there is.
+TEST(CalibrationInputs, CentreLinesAlongTheBoundaryAreNoBoundaryCandidates) {
+  cv::Mat clean(480, 640, CV_8UC3, fl::test::kTurf);
+  clean(cv::Rect(0, 0, 640, 96)).setTo(fl::test::kDark);
+  const cv::Scalar faint = 0.75 * fl::test::kTurf + 0.25 * fl::test::kPaint;
+  cv::line(clean, {40, 101}, {600, 101}, faint, 2, cv::LINE_AA);
+  const cv::Mat image = fl::test::noisy(clean);
+  fl::DetectorParams thin = fl::field_detector(fl::DetectorParams{});
+  thin.thin_reach = 2;
+  fl::LineDetector detector(thin, fl::Thresholds{});
+  fl::CalibrationInputs inputs;
+  inputs.add_image(detector, image);
+  ASSERT_EQ(inputs.boundary_candidates().size(), inputs.segments().size());
+  std::size_t centres = 0, walls = 0;
+  for (std::size_t i = 0; i < inputs.segments().size(); ++i) {
+    const fl::Segment& s = inputs.segments()[i];
+    const float y = 0.5f * (s.y0 + s.y1);
+    if (std::abs(y - 101) <= 0.75f) {
+      ++centres;
+      EXPECT_EQ(inputs.boundary_candidates()[i], 0) << "the line's centre at " << y;
+    } else if (std::abs(y - 95.5f) <= 1.5f) {
+      walls += inputs.boundary_candidates()[i];
+    }
+  }
+  EXPECT_EQ(centres, 1u);
+  EXPECT_GE(walls, 1u);
 }
 
 TEST(CalibrationShared, MeetsTheBarsOnTheAuthorsFilesWithoutTheirLabels) {
