@@ -18,6 +18,7 @@
 //    lines meeting at a corner), each piece of at least kMinWindows windows a segment along the
 //    line's centre with its colour (the line's against its sides).
 // Every buffer is reused: no allocation once warm.
+#include <cstdint>
 #include <vector>
 
 #include <opencv2/core/mat.hpp>
@@ -34,15 +35,23 @@ inline constexpr int kAlongBoundaryReach = 3;
 
 struct AlongBoundary {
   struct Hit {
-    float x = 0, y = 0;  // the window's centre column and the line's row there
+    float x = 0, y = 0;  // the window's centre column and the line's row there...
+    float offset = 0;    // ...that far below the boundary
     int next = -1;       // the hit of the next window it links to
     bool linked = false;  // some hit of the window before links to it
   };
-  std::vector<float> window;    // per offset, the window's summed brightness
-  std::vector<float> previous;  // per offset, the window's first kStepPx columns' sum...
-  std::vector<float> current;   // ...and its last kStepPx columns'
-  std::vector<float> bends;      // per offset, the window profile's second difference's size
+  std::vector<int> tops;        // per column from the boundary's first, its profile's first row
+  std::vector<float> window;    // per offset, the window's mean grey level
+  struct Run {  // columns of one block whose profiles start on one row
+    int byte, bytes, top, block;  // the first column's byte in a row, the run's bytes, the row, the block
+  };
+  std::vector<Run> runs;
+  std::vector<std::uint32_t> sums;  // per block of columns and offset, the summed B + G + R
+  struct Point {
+    float x = 0, y = 0;
+  };
   std::vector<Hit> hits;       // every window's, left to right
+  std::vector<Point> chain;    // one chain's hits in order
   std::vector<int> window_start;  // per window, its first hit (one more: the end)
 };
 
