@@ -25,13 +25,14 @@ constexpr float kMinOffsetPx = 2.5f;
 constexpr float kNoiseRidges = 3;
 constexpr float kLinkPx = 1.5f;     // a line's offset from one window to the next
 constexpr float kStraightPx = 1.f;  // a segment's hits off its line at most
-constexpr int kMinWindows = 4;      // a segment spans at least this many windows (40 px)
+constexpr int kMinWindows = 4;      // a segment spans at least this many windows (32 px)
 
 using Hit = AlongBoundary::Hit;
 
-// Per column [from, to), the row kAbove px above the boundary (its row rounded): the profile's
-// first. One walk along the hull's pieces rather than a search per column.
-void profile_tops(const FieldBoundary& boundary, int from, int to, std::vector<int>& tops) {  // from >= the first point's x
+// Per column [from, to) (from at or right of the boundary's first point), the row kAbove px above
+// the boundary's row there, rounded: the profile's first. One walk along the hull's pieces rather
+// than a search per column.
+void profile_tops(const FieldBoundary& boundary, int from, int to, std::vector<int>& tops) {
   tops.clear();
   const std::vector<FieldBoundary::Point>& p = boundary.points;
   std::size_t piece = 0;

@@ -10,8 +10,9 @@
 //    brightness at each whole offset from a few px above the boundary to `depth` px below it,
 //    each column read at the boundary's row there.
 //  - A window's hits: its profile's local maxima whose ridge (how much brighter than the
-//    brighter side d px away, the most over d = 1..kAlongBoundaryReach) reaches the threshold, placed to a
-//    fraction of a pixel by a parabola through the maximum and its neighbours.
+//    brighter side d px away, the most over d = 1..kAlongBoundaryReach) reaches the threshold
+//    and a few times the window's own noise, placed to a fraction of a pixel by a parabola
+//    through the maximum and its neighbours.
 //  - Hits of neighbouring windows link when the second lies within kLinkPx of where the first
 //    predicts it (the same offset, the boundary's slope between them): chains, cut where a
 //    straight line through them would stray more than kStraightPx from one (a curved line, two
